@@ -1,0 +1,17 @@
+// The command line of the program: run a scene, print the parameters, help.
+#ifndef vpcontact_application_h
+#define vpcontact_application_h
+
+namespace VPContact
+{
+  /**
+   * Run the program as `vpcontact [--help | --print-parameters [dim] |
+   * scene.prm]`: initialize MPI, read the dimension from the scene, run the
+   * simulator of that dimension. Errors are caught here and printed (on rank
+   * 0) as one clean message; the return value is the exit status.
+   */
+  int
+  run_application(int argc, char **argv);
+} // namespace VPContact
+
+#endif

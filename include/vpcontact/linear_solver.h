@@ -1,0 +1,77 @@
+// The linear solver of the displacement system: AMG-preconditioned CG or a
+// direct factorization, built once per matrix and reused at every step.
+#ifndef vpcontact_linear_solver_h
+#define vpcontact_linear_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * Section "Solver": solves K x = b for a symmetric positive definite K.
+   *
+   * The matrix of the paper's velocity problem is constant while the mesh
+   * and the time step are fixed, so the preconditioner (or the factorization)
+   * is built once in initialize() and reused by every solve().
+   */
+  class LinearSolver
+  {
+  public:
+    enum class Method
+    {
+      cg_amg,
+      direct
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Build the preconditioner or factorization of @p matrix. The
+     * @p constant_modes (one bool vector per displacement component) help
+     * AMG to coarsen a vector-valued problem, as in step-42.
+     */
+    void
+    initialize(const TrilinosWrappers::SparseMatrix &matrix,
+               const std::vector<std::vector<bool>> &constant_modes);
+
+    /**
+     * Solve matrix x = b. @p x is the start vector for CG. Returns the number
+     * of iterations (1 for the direct solver, 0 for b = 0). Throws with a
+     * message naming the Solver parameters to change when CG does not reach
+     * the tolerance.
+     */
+    unsigned int
+    solve(const TrilinosWrappers::SparseMatrix &matrix,
+          TrilinosWrappers::MPI::Vector        &x,
+          const TrilinosWrappers::MPI::Vector  &b);
+
+    Method
+    method() const;
+
+  private:
+    Method       solver_method        = Method::cg_amg;
+    double       relative_tolerance   = 1e-10;
+    unsigned int max_iterations       = 1000;
+
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    std::unique_ptr<SolverControl>                     direct_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
+  };
+} // namespace VPContact
+
+#endif

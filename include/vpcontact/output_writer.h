@@ -1,0 +1,87 @@
+// Everything the run writes to disk: the .pvtu/.vtu fields every M steps, the
+// .pvd time series and statistics.csv, in one output folder.
+#ifndef vpcontact_output_writer_h
+#define vpcontact_output_writer_h
+
+#include <vpcontact/statistics.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * Section "Output".
+   *
+   * Files that describe the run as a whole (the .pvd record and
+   * statistics.csv) are rewritten after every step through a temporary file
+   * and a rename, so that a run that stops (an error, a kill) leaves them
+   * complete up to the last finished step, never half-written.
+   */
+  template <int dim>
+  class OutputWriter
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Create the output folder and check that it can be written, on rank 0,
+     * and tell every rank. Throws with a message naming Output/Directory.
+     */
+    void
+    prepare_directory(const MPI_Comm communicator) const;
+
+    /// Whether step @p n of @p n_steps writes fields.
+    bool
+    writes_fields_at(const unsigned int n, const unsigned int n_steps) const;
+
+    /// Write the fields of @p data_out (patches built) for step @p n.
+    void
+    write_fields(const DataOut<dim> &data_out,
+                 const unsigned int  n,
+                 const double        time,
+                 const MPI_Comm      communicator);
+
+    /// Rewrite statistics.csv (rank 0 writes).
+    void
+    write_statistics(const Statistics &statistics,
+                     const MPI_Comm    communicator) const;
+
+    /// Screen output that depends only on the discrete solution.
+    bool
+    deterministic_screen_output() const;
+
+    const std::string &
+    directory() const;
+
+  private:
+    std::string  output_directory = "results";
+    unsigned int output_every     = 10;
+    bool         deterministic    = false;
+
+    /// (time, .pvtu file) of every field output so far, for the .pvd record.
+    std::vector<std::pair<double, std::string>> times_and_names;
+  };
+
+  /**
+   * Write @p content to @p filename through a temporary file in the same
+   * folder and a rename, so that readers see either the old or the new
+   * file. Throws with the file's name if it cannot be written.
+   */
+  void
+  write_file_atomically(const std::string &filename, const std::string &content);
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,45 @@
+// Building a FunctionParser from a parameter entry, so that an expression
+// that does not parse is reported with the parameter's name.
+#ifndef vpcontact_parsed_function_h
+#define vpcontact_parsed_function_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+#include <string>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * Declare an entry holding a function of x, y (, z) and t with
+   * @p n_components components separated by ';'.
+   */
+  void
+  declare_function_entry(ParameterHandler  &prm,
+                         const std::string &entry,
+                         const std::string &default_expression,
+                         const std::string &documentation);
+
+  /**
+   * The parsed function of the entry @p entry of the current subsection
+   * (called @p section in messages). @p constants are name=value pairs that
+   * the expression may use. Throws an ExcMessage naming the parameter when
+   * the expression does not parse or has the wrong number of components.
+   */
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  parse_function_entry(const ParameterHandler &prm,
+                       const std::string      &section,
+                       const std::string      &entry,
+                       const unsigned int      n_components,
+                       const std::map<std::string, double> &constants = {});
+
+  /// The zero expression with @p n components: "0; 0" for n = 2.
+  std::string
+  zero_expression(const unsigned int n);
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,55 @@
+// Comparison of the computed displacement with a displacement known in closed
+// form, for scenes whose exact solution is known (e.g. elastic_bar).
+#ifndef vpcontact_verification_h
+#define vpcontact_verification_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * Section "Verification". When "Exact displacement" is given, every step
+   * reports the largest nodal error max_i |u_h(x_i) - u(x_i)| and the L2
+   * error ||u_h - u||, which are round-off for a solution in the finite
+   * element space.
+   */
+  template <int dim>
+  class Verification
+  {
+  public:
+    struct Errors
+    {
+      double max_nodal = 0;
+      double l2        = 0;
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool
+    is_active() const;
+
+    /// The errors of the ghosted displacement @p solution at @p time.
+    Errors
+    compute_errors(const DoFHandler<dim>               &dof_handler,
+                   const TrilinosWrappers::MPI::Vector &solution,
+                   const double                         time) const;
+
+  private:
+    std::unique_ptr<FunctionParser<dim>> exact_displacement;
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,147 @@
+// The command line: help, parameter listing, and running a scene.
+#include <vpcontact/application.h>
+#include <vpcontact/simulator.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+namespace VPContact
+{
+  namespace
+  {
+    void
+    print_usage(std::ostream &out)
+    {
+      out << "Usage: vpcontact SCENE.prm\n"
+             "       vpcontact --print-parameters [2|3]\n"
+             "       vpcontact --help\n\n"
+             "Runs the quasistatic scene described by SCENE.prm (deal.II "
+             "ParameterHandler format)\nand writes its fields (.pvtu/.pvd) and "
+             "statistics.csv to Output/Directory.\nRun in parallel with "
+             "`mpirun -np N vpcontact SCENE.prm`.\n\n"
+             "--print-parameters  print every parameter with its default, "
+             "allowed values and\n                    documentation, as a "
+             "valid .prm file (for a 2D or 3D scene).\n";
+    }
+
+
+
+    // Read "Dimension" alone, skipping the other entries, so that the
+    // simulator of the right dimension can then declare and read the rest.
+    unsigned int
+    read_dimension(const std::string &filename)
+    {
+      ParameterHandler prm;
+      prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
+      prm.parse_input(filename, "", true);
+      return prm.get_integer("Dimension");
+    }
+
+
+
+    template <int dim>
+    void
+    run_scene(const std::string &filename, const MPI_Comm communicator)
+    {
+      ParameterHandler prm;
+      Simulator<dim>::declare_parameters(prm);
+      prm.parse_input(filename);
+      const std::string directory =
+        std::filesystem::path(filename).parent_path().string();
+      Simulator<dim> simulator(prm,
+                               directory.empty() ? "." : directory,
+                               communicator);
+      simulator.run();
+    }
+
+
+
+    template <int dim>
+    void
+    print_parameters()
+    {
+      ParameterHandler prm;
+      Simulator<dim>::declare_parameters(prm);
+      std::cout << "# All parameters of vpcontact for a " << dim
+                << "D scene, with their defaults.\n";
+      prm.print_parameters(std::cout, ParameterHandler::PRM);
+    }
+
+
+
+    int
+    report_error(const std::string &message, const MPI_Comm communicator)
+    {
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
+        std::cerr << "\nError: " << message << "\nStopped; exit status 1."
+                  << std::endl;
+      return 1;
+    }
+  } // namespace
+
+
+
+  int
+  run_application(int argc, char **argv)
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    const MPI_Comm communicator = MPI_COMM_WORLD;
+    const bool     rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
+    const std::vector<std::string> args(argv + 1, argv + argc);
+
+    try
+      {
+        if (args.empty() || args[0] == "--help" || args[0] == "-h")
+          {
+            if (rank_zero)
+              print_usage(args.empty() ? std::cerr : std::cout);
+            return args.empty() ? 1 : 0;
+          }
+        if (args[0] == "--print-parameters")
+          {
+            const std::string dim = (args.size() > 1 ? args[1] : "2");
+            AssertThrow(dim == "2" || dim == "3",
+                        ExcMessage("--print-parameters takes 2 or 3, not '" +
+                                   dim + "'."));
+            if (rank_zero)
+              (dim == "2" ? print_parameters<2>() : print_parameters<3>());
+            return 0;
+          }
+        AssertThrow(args.size() == 1 && args[0].rfind("--", 0) != 0,
+                    ExcMessage("Unexpected arguments. Usage: vpcontact "
+                               "SCENE.prm (see vpcontact --help)."));
+
+        const std::string &filename = args[0];
+        AssertThrow(std::ifstream(filename).good(),
+                    ExcMessage("Cannot open the parameter file '" + filename +
+                               "'. Check the path."));
+        if (read_dimension(filename) == 2)
+          run_scene<2>(filename, communicator);
+        else
+          run_scene<3>(filename, communicator);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        std::string message = info.str();
+        while (!message.empty() &&
+               (message.back() == '\n' || message.back() == ' '))
+          message.pop_back();
+        while (!message.empty() &&
+               (message.front() == '\n' || message.front() == ' '))
+          message.erase(0, 1);
+        return report_error(message, communicator);
+      }
+    catch (const std::exception &e)
+      {
+        return report_error(e.what(), communicator);
+      }
+    return 0;
+  }
+} // namespace VPContact

@@ -1,0 +1,184 @@
+// The section "Geometry": the coarse mesh (generated box or mesh file) and its
+// global refinement.
+#include <vpcontact/geometry.h>
+#include <vpcontact/input_error.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace VPContact
+{
+  namespace
+  {
+    // The default corner and subdivision lists of a box, written for dim.
+    std::string
+    repeated(const std::string &value, const unsigned int n)
+    {
+      std::string s = value;
+      for (unsigned int i = 1; i < n; ++i)
+        s += ", " + value;
+      return s;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Mesh",
+                        "box",
+                        Patterns::Selection("box|file"),
+                        "'box': a rectangle (box in 3D) from the corners and "
+                        "subdivisions below, with boundary ids 0 = left "
+                        "(x = x0), 1 = right, 2 = bottom, 3 = top (4 = front, "
+                        "5 = back in 3D). 'file': the mesh in 'Mesh file'.");
+      prm.declare_entry("Lower corner",
+                        repeated("0", dim),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Box only: the corner with the smallest coordinates "
+                        "[m], dim comma-separated values.");
+      prm.declare_entry("Upper corner",
+                        repeated("1", dim),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Box only: the corner with the largest coordinates "
+                        "[m], dim comma-separated values.");
+      prm.declare_entry("Subdivisions",
+                        repeated(dim == 2 ? "32" : "8", dim),
+                        Patterns::List(Patterns::Integer(1), dim, dim),
+                        "Box only: number of cells in each coordinate "
+                        "direction of the coarse mesh, dim values.");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::FileName(),
+                        "File only: a mesh that deal.II's GridIn reads, chosen "
+                        "by extension (.msh Gmsh, .inp UCD, .vtk VTK), with "
+                        "boundary ids as physical tags. A relative path is "
+                        "relative to the directory of the parameter file.");
+      prm.declare_entry("Global refinements",
+                        "0",
+                        Patterns::Integer(0, 12),
+                        "Number of times every coarse cell is refined "
+                        "(each refinement halves h).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::parse_parameters(ParameterHandler  &prm,
+                                  const std::string &parameter_directory)
+  {
+    prm.enter_subsection("Geometry");
+    shape = (prm.get("Mesh") == "box" ? Shape::box : Shape::file);
+
+    const auto lower =
+      Utilities::string_to_double(Utilities::split_string_list(
+        prm.get("Lower corner")));
+    const auto upper =
+      Utilities::string_to_double(Utilities::split_string_list(
+        prm.get("Upper corner")));
+    const auto subs = Utilities::string_to_int(
+      Utilities::split_string_list(prm.get("Subdivisions")));
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower_corner[d] = lower[d];
+        upper_corner[d] = upper[d];
+        VPContactCheckParameter(upper[d] > lower[d],
+                                "Geometry/Upper corner",
+                                prm.get("Upper corner"),
+                                "every coordinate must exceed that of "
+                                "Geometry/Lower corner = " +
+                                  prm.get("Lower corner") + ".");
+      }
+    subdivisions.assign(subs.begin(), subs.end());
+
+    mesh_file = prm.get("Mesh file");
+    if (shape == Shape::file)
+      {
+        VPContactCheckParameter(!mesh_file.empty(),
+                                "Geometry/Mesh file",
+                                "(empty)",
+                                "'Mesh = file' needs a mesh file name.");
+        if (std::filesystem::path(mesh_file).is_relative())
+          mesh_file = (std::filesystem::path(parameter_directory) / mesh_file)
+                        .lexically_normal()
+                        .string();
+      }
+    n_global_refinements = prm.get_integer("Global refinements");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::create_mesh(
+    parallel::distributed::Triangulation<dim> &triangulation) const
+  {
+    if (shape == Shape::box)
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, subdivisions, lower_corner, upper_corner, true);
+    else
+      {
+        // Check the file ourselves first: GridIn's own message for a missing
+        // file does not say which parameter it came from.
+        std::ifstream in(mesh_file);
+        VPContactCheckParameter(in.good(),
+                                "Geometry/Mesh file",
+                                mesh_file,
+                                "cannot open this file (missing or not "
+                                "readable). Check the path; a relative path "
+                                "is taken from the parameter file's folder.");
+        GridIn<dim> grid_in;
+        grid_in.attach_triangulation(triangulation);
+        try
+          {
+            grid_in.read(mesh_file);
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("Geometry/Mesh file = " + mesh_file +
+                                   ": GridIn could not read it as a " +
+                                   std::to_string(dim) +
+                                   "D mesh. Its message was:\n" + e.what()));
+          }
+      }
+    triangulation.refine_global(n_global_refinements);
+  }
+
+
+
+  template <int dim>
+  std::set<types::boundary_id>
+  Geometry<dim>::boundary_ids_of(
+    const parallel::distributed::Triangulation<dim> &triangulation)
+  {
+    std::vector<types::boundary_id> local;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            local.push_back(face->boundary_id());
+    const auto all = Utilities::MPI::compute_set_union(
+      local, triangulation.get_communicator());
+    return std::set<types::boundary_id>(all.begin(), all.end());
+  }
+
+
+
+  template class Geometry<2>;
+  template class Geometry<3>;
+} // namespace VPContact

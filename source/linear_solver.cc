@@ -1,0 +1,139 @@
+// The section "Solver" and the solution of the displacement system.
+#include <vpcontact/input_error.h>
+#include <vpcontact/linear_solver.h>
+
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+namespace VPContact
+{
+  void
+  LinearSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Linear solver",
+                        "CG with AMG",
+                        Patterns::Selection("CG with AMG|direct"),
+                        "'CG with AMG': conjugate gradients preconditioned by "
+                        "Trilinos ML algebraic multigrid, scales to large "
+                        "meshes and many ranks. 'direct': Trilinos Amesos KLU "
+                        "factorization, exact to round-off, for small meshes "
+                        "(it gathers the matrix).");
+      prm.declare_entry("Relative tolerance",
+                        "1e-10",
+                        Patterns::Double(0, 1),
+                        "CG stops when the residual norm is below this "
+                        "fraction of the right-hand side norm.");
+      prm.declare_entry("Maximum linear iterations",
+                        "1000",
+                        Patterns::Integer(1),
+                        "CG gives up (and the run stops with a message) after "
+                        "this many iterations.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LinearSolver::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    solver_method      = (prm.get("Linear solver") == "direct" ? Method::direct :
+                                                                 Method::cg_amg);
+    relative_tolerance = prm.get_double("Relative tolerance");
+    max_iterations     = prm.get_integer("Maximum linear iterations");
+    prm.leave_subsection();
+    VPContactCheckParameter(relative_tolerance > 0,
+                            "Solver/Relative tolerance",
+                            relative_tolerance,
+                            "must be positive, e.g. 1e-10.");
+  }
+
+
+
+  void
+  LinearSolver::initialize(const TrilinosWrappers::SparseMatrix &matrix,
+                           const std::vector<std::vector<bool>> &constant_modes)
+  {
+    if (solver_method == Method::cg_amg)
+      {
+        // The settings of step-42 for elasticity: a symmetric problem
+        // (elliptic = true), the rigid translations as near null space,
+        // aggressive smoothing on few levels.
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = false;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 1e-2;
+        data.constant_modes        = constant_modes;
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg->initialize(matrix, data);
+      }
+    else
+      {
+        direct_control = std::make_unique<SolverControl>(1, 0);
+        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+          *direct_control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+        direct->initialize(matrix);
+      }
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                      TrilinosWrappers::MPI::Vector        &x,
+                      const TrilinosWrappers::MPI::Vector  &b)
+  {
+    const double b_norm = b.l2_norm();
+    AssertThrow(std::isfinite(b_norm),
+                ExcMessage("The right-hand side of the displacement system "
+                           "is not finite (NaN or Inf). Check the load "
+                           "expressions in 'Boundary conditions'."));
+    if (b_norm == 0.)
+      {
+        x = 0.;
+        return 0;
+      }
+
+    if (solver_method == Method::direct)
+      {
+        direct->solve(x, b);
+        return 1;
+      }
+
+    SolverControl control(max_iterations, relative_tolerance * b_norm);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    try
+      {
+        cg.solve(matrix, x, b, *amg);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(
+                      "CG did not converge: after " +
+                      std::to_string(e.last_step) + " iterations the "
+                      "residual is " + to_text(e.last_residual) +
+                      " > " + to_text(control.tolerance()) +
+                      " (Solver/Relative tolerance = " +
+                      to_text(relative_tolerance) + " times |b|). Raise "
+                      "Solver/Maximum linear iterations = " +
+                      std::to_string(max_iterations) +
+                      ", loosen the tolerance, or use Solver/Linear solver = "
+                      "direct on small meshes."));
+      }
+    return control.last_step();
+  }
+
+
+
+  LinearSolver::Method
+  LinearSolver::method() const
+  {
+    return solver_method;
+  }
+} // namespace VPContact

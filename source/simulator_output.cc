@@ -1,0 +1,236 @@
+// The simulator's output: cell-averaged stresses, the statistics row of every
+// step, the screen, and the fields for ParaView.
+#include <vpcontact/simulator.h>
+#include <vpcontact/stress_measures.h>
+
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <cstdio>
+
+namespace VPContact
+{
+  namespace
+  {
+    // Names of the independent stress components, in the order of
+    // SymmetricTensor's unrolled index: xx, yy, (zz,) xy, (xz, yz).
+    template <int dim>
+    std::vector<std::string>
+    stress_component_names()
+    {
+      if (dim == 2)
+        return {"stress_xx", "stress_yy", "stress_xy"};
+      return {"stress_xx", "stress_yy", "stress_zz",
+              "stress_xy", "stress_xz", "stress_yz"};
+    }
+
+    std::string
+    format(const char *pattern, const double value)
+    {
+      char buffer[64];
+      std::snprintf(buffer, sizeof(buffer), pattern, value);
+      return buffer;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::print_header() const
+  {
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    pcout << "vpcontact: " << dim << "D quasistatic linear elasticity ("
+          << (dim == 3 ? "3D" :
+              material.plane_hypothesis() ==
+                  ElasticMaterial<dim>::PlaneHypothesis::plane_stress ?
+                         "plane stress" :
+                         "plane strain")
+          << "), E = " << material.youngs_modulus()
+          << ", nu = " << material.poisson_ratio() << '\n'
+          << "  boundary: " << boundary_conditions.summary() << '\n'
+          << "  contact: "
+          << (boundary_conditions.has_contact_boundary() ?
+                "bilateral (u.nu = 0), frictionless" :
+                "none")
+          << '\n'
+          << "  mesh: " << triangulation.n_global_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " dofs"
+          << '\n'
+          << "  time: T = " << time_discretization.end_time()
+          << ", k = " << time_discretization.step_size() << ", "
+          << time_discretization.n_steps() << " steps\n";
+    if (!output_writer.deterministic_screen_output())
+      pcout << "  running on " << n_ranks << " MPI rank(s); output in "
+            << output_writer.directory() << "/\n";
+    pcout << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_cell_stresses(
+    Vector<double>              &von_mises,
+    std::vector<Vector<double>> &components) const
+  {
+    // The stress E eps(u_h) averaged over each cell: the L2 projection onto
+    // piecewise constants, i.e. the paper's stress space Q^h.
+    const QGauss<dim>                    quadrature(fe.degree + 1);
+    FEValues<dim>                        fe_values(fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     u(0);
+    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
+
+    von_mises.reinit(triangulation.n_active_cells());
+    components.assign(SymmetricTensor<2, dim>::n_independent_components,
+                      Vector<double>(triangulation.n_active_cells()));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[u].get_function_symmetric_gradients(displacement, strains);
+          SymmetricTensor<2, dim> average;
+          double                  volume = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              average += material.stress(strains[q]) * fe_values.JxW(q);
+              volume += fe_values.JxW(q);
+            }
+          average /= volume;
+          const unsigned int index = cell->active_cell_index();
+          von_mises(index)         = von_mises_norm(average);
+          for (unsigned int c = 0; c < components.size(); ++c)
+            components[c](index) =
+              average[SymmetricTensor<2, dim>::unrolled_to_component_indices(
+                c)];
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::postprocess_step(const unsigned int n,
+                                   const double       step_wall_time)
+  {
+    TimerOutput::Scope t(computing_timer, "Postprocess and output");
+    const double       time = time_discretization.time(n);
+
+    Vector<double>              von_mises;
+    std::vector<Vector<double>> components;
+    compute_cell_stresses(von_mises, components);
+    const double von_mises_max =
+      Utilities::MPI::max(von_mises.linfty_norm(), mpi_communicator);
+
+    // The largest nodal displacement |u(x_i)|, over vertices.
+    double u_max = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            double norm_square = 0;
+            for (unsigned int d = 0; d < dim; ++d)
+              norm_square +=
+                std::pow(displacement(cell->vertex_dof_index(v, d)), 2);
+            u_max = std::max(u_max, std::sqrt(norm_square));
+          }
+    u_max = Utilities::MPI::max(u_max, mpi_communicator);
+
+    statistics.start_row();
+    statistics.add_value("step", n);
+    statistics.add_value("time", time);
+    statistics.add_value("cells",
+                         static_cast<unsigned long long>(
+                           triangulation.n_global_active_cells()));
+    statistics.add_value("dofs",
+                         static_cast<unsigned long long>(dof_handler.n_dofs()));
+    statistics.add_value("linear_iterations",
+                         n == 0 ? 0u : last_linear_iterations);
+    statistics.add_value("wall_time", step_wall_time);
+    statistics.add_value("u_max", u_max);
+    statistics.add_value("von_mises_max", von_mises_max);
+
+    std::string line = "step " + std::to_string(n) + "  t = " +
+                       format("%.6g", time) + "  |u|max = " +
+                       format("%.6e", u_max) + "  von Mises max = " +
+                       format("%.6e", von_mises_max);
+    if (verification.is_active())
+      {
+        const auto errors =
+          verification.compute_errors(dof_handler, displacement, time);
+        statistics.add_value("u_error_max_nodal", errors.max_nodal);
+        statistics.add_value("u_error_L2", errors.l2);
+        // Errors are round-off in verification scenes: printed with two
+        // digits, they differ between runs only below numdiff's absolute
+        // tolerance.
+        line += "  error: nodal max = " + format("%.2e", errors.max_nodal) +
+                ", L2 = " + format("%.2e", errors.l2);
+      }
+    if (!output_writer.deterministic_screen_output() && n > 0)
+      line += "  CG its = " + std::to_string(last_linear_iterations) +
+              format("  (%.3f s)", step_wall_time);
+    pcout << line << std::endl;
+
+    if (output_writer.writes_fields_at(n, time_discretization.n_steps()))
+      write_fields(n, von_mises, components);
+    output_writer.write_statistics(statistics, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_fields(const unsigned int                 n,
+                               const Vector<double>              &von_mises,
+                               const std::vector<Vector<double>> &components)
+  {
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(
+      displacement,
+      std::vector<std::string>(dim, "displacement"),
+      DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    data_out.add_data_vector(von_mises, "von_mises", DataOut<dim>::type_cell_data);
+    const auto names = stress_component_names<dim>();
+    for (unsigned int c = 0; c < components.size(); ++c)
+      data_out.add_data_vector(components[c],
+                               names[c],
+                               DataOut<dim>::type_cell_data);
+    Vector<float> subdomain(triangulation.n_active_cells());
+    subdomain = static_cast<float>(triangulation.locally_owned_subdomain());
+    data_out.add_data_vector(subdomain, "subdomain", DataOut<dim>::type_cell_data);
+    data_out.build_patches();
+    output_writer.write_fields(data_out,
+                               n,
+                               time_discretization.time(n),
+                               mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::print_summary() const
+  {
+    pcout << "\nRun complete: " << time_discretization.n_steps()
+          << " steps; statistics in " << "statistics.csv";
+    if (!output_writer.deterministic_screen_output())
+      {
+        pcout << " (folder " << output_writer.directory() << ")" << std::endl;
+        computing_timer.print_summary();
+      }
+    pcout << std::endl;
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace VPContact

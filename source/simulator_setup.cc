@@ -1,0 +1,62 @@
+// The simulator's mesh, degrees of freedom, constraints and sparsity.
+#include <vpcontact/simulator.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  Simulator<dim>::make_mesh()
+  {
+    TimerOutput::Scope t(computing_timer, "Setup");
+    geometry.create_mesh(triangulation);
+    boundary_conditions.check_against_mesh(
+      Geometry<dim>::boundary_ids_of(triangulation));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_dofs()
+  {
+    TimerOutput::Scope t(computing_timer, "Setup");
+    dof_handler.distribute_dofs(fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    boundary_conditions.make_constraints(dof_handler, constraints);
+    constraints.close();
+
+    // The sparsity pattern of step-40: built on the locally relevant rows,
+    // then the entries of rows owned by other ranks are sent to them.
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    stiffness_matrix.reinit(locally_owned_dofs,
+                            locally_owned_dofs,
+                            dsp,
+                            mpi_communicator);
+
+    load_vector.reinit(locally_owned_dofs, mpi_communicator);
+    displacement_owned.reinit(locally_owned_dofs, mpi_communicator);
+    displacement.reinit(locally_owned_dofs,
+                        locally_relevant_dofs,
+                        mpi_communicator);
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace VPContact

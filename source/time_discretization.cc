@@ -1,0 +1,96 @@
+// The section "Time" and the uniform time grid.
+#include <vpcontact/input_error.h>
+#include <vpcontact/time_discretization.h>
+
+#include <cmath>
+
+namespace VPContact
+{
+  void
+  TimeDiscretization::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    {
+      prm.declare_entry("End time",
+                        "1",
+                        Patterns::Double(),
+                        "Final time T [s]. Must be positive.");
+      prm.declare_entry("Time step",
+                        "0.01",
+                        Patterns::Double(),
+                        "Time step k [s]; T must be a whole multiple of k "
+                        "(the paper's uniform partition k = T/N).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  TimeDiscretization::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    T = prm.get_double("End time");
+    k = prm.get_double("Time step");
+    prm.leave_subsection();
+
+    VPContactCheckParameter(T > 0,
+                            "Time/End time",
+                            T,
+                            "the end time must be positive. Give T > 0 [s].");
+    VPContactCheckParameter(k > 0 && k <= T,
+                            "Time/Time step",
+                            k,
+                            "the step must lie in (0, End time = " +
+                              to_text(T) + "].");
+    // A relative slack of 1e-9 accepts T = 1, k = 0.1 although 1/0.1 is not
+    // exactly 10 in binary arithmetic.
+    const double ratio = T / k;
+    n_total            = static_cast<unsigned int>(std::llround(ratio));
+    VPContactCheckParameter(std::abs(ratio - n_total) <= 1e-9 * ratio,
+                            "Time/Time step",
+                            k,
+                            "End time = " + to_text(T) +
+                              " is not a whole number of steps (T/k = " +
+                              to_text(ratio) +
+                              "). Choose k = T/N for an integer N.");
+    VPContactCheckParameter(n_total <= 100000000u,
+                            "Time/Time step",
+                            k,
+                            "T/k = " + to_text(ratio) +
+                              " steps is more than this program allows "
+                              "(1e8). Choose a larger step.");
+  }
+
+
+
+  double
+  TimeDiscretization::end_time() const
+  {
+    return T;
+  }
+
+
+
+  double
+  TimeDiscretization::step_size() const
+  {
+    return k;
+  }
+
+
+
+  unsigned int
+  TimeDiscretization::n_steps() const
+  {
+    return n_total;
+  }
+
+
+
+  double
+  TimeDiscretization::time(const unsigned int n) const
+  {
+    return (n == n_total ? T : n * k);
+  }
+} // namespace VPContact

@@ -1,0 +1,105 @@
+// Errors against a closed-form displacement (section "Verification").
+#include <vpcontact/parsed_function.h>
+#include <vpcontact/verification.h>
+
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  Verification<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    {
+      prm.declare_entry("Exact displacement",
+                        "",
+                        Patterns::Anything(),
+                        "If not empty: the exact displacement u(x, t) [m], "
+                        "one expression per component separated by ';', in "
+                        "x, y (z) and t. Its nodal and L2 errors are then "
+                        "printed and written to statistics.csv.");
+      prm.declare_entry("Function constants",
+                        "",
+                        Patterns::Map(Patterns::Anything(), Patterns::Double()),
+                        "Named constants for 'Exact displacement', as "
+                        "name:value pairs.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Verification<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    if (!prm.get("Exact displacement").empty())
+      {
+        std::map<std::string, double> constants;
+        for (const std::string &pair :
+             Utilities::split_string_list(prm.get("Function constants")))
+          {
+            const auto key_value = Utilities::split_string_list(pair, ':');
+            constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
+          }
+        exact_displacement = parse_function_entry<dim>(
+          prm, "Verification", "Exact displacement", dim, constants);
+      }
+    else
+      exact_displacement.reset();
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  bool
+  Verification<dim>::is_active() const
+  {
+    return exact_displacement != nullptr;
+  }
+
+
+
+  template <int dim>
+  typename Verification<dim>::Errors
+  Verification<dim>::compute_errors(
+    const DoFHandler<dim>               &dof_handler,
+    const TrilinosWrappers::MPI::Vector &solution,
+    const double                         time) const
+  {
+    Assert(is_active(), ExcInternalError());
+    exact_displacement->set_time(time);
+
+    Errors errors;
+    TrilinosWrappers::MPI::Vector nodal(dof_handler.locally_owned_dofs(),
+                                        solution.get_mpi_communicator());
+    VectorTools::interpolate(dof_handler, *exact_displacement, nodal);
+    TrilinosWrappers::MPI::Vector owned(nodal);
+    owned = solution; // imports the locally owned part of the ghosted vector
+    nodal -= owned;
+    errors.max_nodal = nodal.linfty_norm();
+
+    Vector<float> cellwise(dof_handler.get_triangulation().n_active_cells());
+    VectorTools::integrate_difference(dof_handler,
+                                      solution,
+                                      *exact_displacement,
+                                      cellwise,
+                                      QGauss<dim>(3),
+                                      VectorTools::L2_norm);
+    errors.l2 = VectorTools::compute_global_error(
+      dof_handler.get_triangulation(), cellwise, VectorTools::L2_norm);
+    return errors;
+  }
+
+
+
+  template class Verification<2>;
+  template class Verification<3>;
+} // namespace VPContact
