@@ -104,7 +104,8 @@ namespace VPContact
       }
     subdivisions.assign(subs.begin(), subs.end());
 
-    mesh_file = prm.get("Mesh file");
+    mesh_file          = prm.get("Mesh file");
+    mesh_file_as_given = mesh_file;
     if (shape == Shape::file)
       {
         VPContactCheckParameter(!mesh_file.empty(),
@@ -137,7 +138,7 @@ namespace VPContact
         std::ifstream in(mesh_file);
         VPContactCheckParameter(in.good(),
                                 "Geometry/Mesh file",
-                                mesh_file,
+                                mesh_file_as_given,
                                 "cannot open this file (missing or not "
                                 "readable). Check the path; a relative path "
                                 "is taken from the parameter file's folder.");
@@ -150,7 +151,8 @@ namespace VPContact
         catch (const std::exception &e)
           {
             AssertThrow(false,
-                        ExcMessage("Geometry/Mesh file = " + mesh_file +
+                        ExcMessage("Geometry/Mesh file = " +
+                                   mesh_file_as_given +
                                    ": GridIn could not read it as a " +
                                    std::to_string(dim) +
                                    "D mesh. Its message was:\n" + e.what()));

@@ -23,6 +23,7 @@ namespace VPContact
     Geometry<dim>::declare_parameters(prm);
     ElasticMaterial<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm);
+    TrescaFriction<dim>::declare_parameters(prm);
     TimeDiscretization::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
@@ -51,6 +52,7 @@ namespace VPContact
     geometry.parse_parameters(prm, parameter_directory);
     material.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
+    friction.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     output_writer.parse_parameters(prm);

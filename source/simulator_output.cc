@@ -54,7 +54,8 @@ namespace VPContact
           << "  boundary: " << boundary_conditions.summary() << '\n'
           << "  contact: "
           << (boundary_conditions.has_contact_boundary() ?
-                "bilateral (u.nu = 0), frictionless" :
+                "bilateral (u.nu = 0), frictionless in this release "
+                "(Contact/Friction bound is checked, not yet applied)" :
                 "none")
           << '\n'
           << "  mesh: " << triangulation.n_global_active_cells() << " cells, "

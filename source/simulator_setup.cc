@@ -16,6 +16,15 @@ namespace VPContact
     geometry.create_mesh(triangulation);
     boundary_conditions.check_against_mesh(
       Geometry<dim>::boundary_ids_of(triangulation));
+    if (boundary_conditions.has_contact_boundary())
+      {
+        std::vector<double> times;
+        for (unsigned int n = 0; n <= time_discretization.n_steps(); ++n)
+          times.push_back(time_discretization.time(n));
+        friction.check_bound(triangulation,
+                             boundary_conditions.contact_boundary_ids(),
+                             times);
+      }
   }
 
 

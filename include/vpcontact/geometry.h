@@ -63,6 +63,8 @@ namespace VPContact
     Point<dim>                upper_corner;
     std::vector<unsigned int> subdivisions;
     std::string               mesh_file;
+    /// The entry as the user wrote it, for messages.
+    std::string               mesh_file_as_given;
     unsigned int              n_global_refinements = 0;
   };
 } // namespace VPContact

@@ -10,6 +10,7 @@
 #include <vpcontact/output_writer.h>
 #include <vpcontact/statistics.h>
 #include <vpcontact/time_discretization.h>
+#include <vpcontact/tresca_friction.h>
 #include <vpcontact/verification.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -108,6 +109,7 @@ namespace VPContact
     Geometry<dim>           geometry;
     ElasticMaterial<dim>    material;
     BoundaryConditions<dim> boundary_conditions;
+    TrescaFriction<dim>     friction;
     TimeDiscretization      time_discretization;
     LinearSolver            linear_solver;
     OutputWriter<dim>       output_writer;
