@@ -93,6 +93,20 @@ namespace VPContact
     const MPI_Comm communicator = MPI_COMM_WORLD;
     const bool     rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
     const std::vector<std::string> args(argv + 1, argv + argc);
+    // ParameterHandler's messages name the file with the path it was given;
+    // show it relative to the parameter file's folder, as the user wrote it.
+    const auto shorten_paths = [&](std::string message) {
+      if (args.size() == 1)
+        {
+          const std::string folder =
+            std::filesystem::path(args[0]).parent_path().string();
+          for (std::size_t at;
+               !folder.empty() && (at = message.find(folder + "/")) !=
+                                    std::string::npos;)
+            message.erase(at, folder.size() + 1);
+        }
+      return message;
+    };
 
     try
       {
@@ -136,11 +150,11 @@ namespace VPContact
         while (!message.empty() &&
                (message.front() == '\n' || message.front() == ' '))
           message.erase(0, 1);
-        return report_error(message, communicator);
+        return report_error(shorten_paths(message), communicator);
       }
     catch (const std::exception &e)
       {
-        return report_error(e.what(), communicator);
+        return report_error(shorten_paths(e.what()), communicator);
       }
     return 0;
   }

@@ -7,6 +7,9 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <iostream>
+#include <sstream>
+
 namespace VPContact
 {
   void
@@ -59,6 +62,11 @@ namespace VPContact
     const std::string variables =
       (dim == 2 ? "x,y,t" : (dim == 3 ? "x,y,z,t" : "x,t"));
     auto function = std::make_unique<FunctionParser<dim>>(n_components);
+    // FunctionParser prints muParser's diagnostics to std::cerr before it
+    // throws; keep them out of the screen output, our message has them.
+    std::ostringstream    muparser_diagnostics;
+    std::streambuf *const cerr_buffer =
+      std::cerr.rdbuf(muparser_diagnostics.rdbuf());
     try
       {
         function->initialize(variables, parts, constants, true);
@@ -67,9 +75,11 @@ namespace VPContact
         // with the parameter's name, and not in the middle of assembly.
         Vector<double> values(n_components);
         function->vector_value(Point<dim>(), values);
+        std::cerr.rdbuf(cerr_buffer);
       }
     catch (const ExceptionBase &e)
       {
+        std::cerr.rdbuf(cerr_buffer);
         std::ostringstream info;
         e.print_info(info);
         AssertThrow(false,

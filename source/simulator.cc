@@ -38,10 +38,10 @@ namespace VPContact
                             const MPI_Comm     communicator)
     : mpi_communicator(communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
-    , computing_timer(communicator,
-                      pcout,
-                      TimerOutput::never,
-                      TimerOutput::wall_times)
+    // The timer is not tied to the communicator: its summary is rank 0's
+    // view, and an input error thrown while the simulator is built does not
+    // trigger TimerOutput's collective clean-up in its destructor.
+    , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(communicator,
                     typename Triangulation<dim>::MeshSmoothing(
                       Triangulation<dim>::smoothing_on_refinement |

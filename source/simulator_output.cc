@@ -163,7 +163,7 @@ namespace VPContact
     if (verification.is_active())
       {
         const auto errors =
-          verification.compute_errors(dof_handler, displacement, time);
+          verification.compute_errors(dof_handler, displacement, time, u_max);
         statistics.add_value("u_error_max_nodal", errors.max_nodal);
         statistics.add_value("u_error_L2", errors.l2);
         // Errors are round-off in verification scenes: printed with two
@@ -220,6 +220,8 @@ namespace VPContact
   void
   Simulator<dim>::print_summary() const
   {
+    if (verification.is_active())
+      pcout << '\n' << verification.summary();
     pcout << "\nRun complete: " << time_discretization.n_steps()
           << " steps; statistics in " << "statistics.csv";
     if (!output_writer.deterministic_screen_output())

@@ -8,6 +8,9 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
+#include <cstdio>
+
 namespace VPContact
 {
   template <int dim>
@@ -72,7 +75,8 @@ namespace VPContact
   Verification<dim>::compute_errors(
     const DoFHandler<dim>               &dof_handler,
     const TrilinosWrappers::MPI::Vector &solution,
-    const double                         time) const
+    const double                         time,
+    const double                         u_max)
   {
     Assert(is_active(), ExcInternalError());
     exact_displacement->set_time(time);
@@ -95,7 +99,29 @@ namespace VPContact
                                       VectorTools::L2_norm);
     errors.l2 = VectorTools::compute_global_error(
       dof_handler.get_triangulation(), cellwise, VectorTools::L2_norm);
+    max_nodal_error  = std::max(max_nodal_error, errors.max_nodal);
+    max_displacement = std::max(max_displacement, u_max);
     return errors;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Verification<dim>::summary() const
+  {
+    const double relative =
+      (max_displacement > 0 ? max_nodal_error / max_displacement :
+                              max_nodal_error);
+    char buffer[160];
+    std::snprintf(buffer,
+                  sizeof(buffer),
+                  "Verification: largest nodal error / largest |u| = %.1e "
+                  "(round-off, below %.0e: %s)",
+                  relative,
+                  round_off_level,
+                  relative < round_off_level ? "yes" : "NO");
+    return buffer;
   }
 
 

@@ -41,13 +41,32 @@ namespace VPContact
     bool
     is_active() const;
 
-    /// The errors of the ghosted displacement @p solution at @p time.
+    /**
+     * The errors of the ghosted displacement @p solution at @p time, whose
+     * largest nodal value is @p u_max; the run's largest errors are kept
+     * for summary().
+     */
     Errors
     compute_errors(const DoFHandler<dim>               &dof_handler,
                    const TrilinosWrappers::MPI::Vector &solution,
-                   const double                         time) const;
+                   const double                         time,
+                   const double                         u_max);
+
+    /**
+     * One line for the end of the run: the largest nodal error relative to
+     * the largest displacement, and whether that is round-off.
+     */
+    std::string
+    summary() const;
 
   private:
+    /// A relative nodal error below this is round-off for double precision
+    /// and the solver tolerances the verification scenes use.
+    static constexpr double round_off_level = 1e-10;
+
+    double max_nodal_error = 0;
+    double max_displacement = 0;
+
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
   };
 } // namespace VPContact
