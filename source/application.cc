@@ -1,5 +1,6 @@
 // The command line: help, parameter listing, and running a scene.
 #include <vpcontact/application.h>
+#include <vpcontact/parameter_listing.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/mpi.h>
@@ -51,8 +52,8 @@ namespace VPContact
       ParameterHandler prm;
       Simulator<dim>::declare_parameters(prm);
       prm.parse_input(filename);
-      const std::string directory =
-        std::filesystem::path(filename).parent_path().string();
+      const std::string directory
+        = std::filesystem::path(filename).parent_path().string();
       Simulator<dim> simulator(prm,
                                directory.empty() ? "." : directory,
                                communicator);
@@ -69,7 +70,7 @@ namespace VPContact
       Simulator<dim>::declare_parameters(prm);
       std::cout << "# All parameters of vpcontact for a " << dim
                 << "D scene, with their defaults.\n";
-      prm.print_parameters(std::cout, ParameterHandler::PRM);
+      print_parameter_listing(prm, std::cout);
     }
 
 
@@ -90,19 +91,19 @@ namespace VPContact
   run_application(int argc, char **argv)
   {
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-    const MPI_Comm communicator = MPI_COMM_WORLD;
-    const bool     rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
+    const MPI_Comm                   communicator = MPI_COMM_WORLD;
+    const bool rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
     const std::vector<std::string> args(argv + 1, argv + argc);
     // ParameterHandler's messages name the file with the path it was given;
     // show it relative to the parameter file's folder, as the user wrote it.
     const auto shorten_paths = [&](std::string message) {
       if (args.size() == 1)
         {
-          const std::string folder =
-            std::filesystem::path(args[0]).parent_path().string();
+          const std::string folder
+            = std::filesystem::path(args[0]).parent_path().string();
           for (std::size_t at;
-               !folder.empty() && (at = message.find(folder + "/")) !=
-                                    std::string::npos;)
+               !folder.empty()
+               && (at = message.find(folder + "/")) != std::string::npos;)
             message.erase(at, folder.size() + 1);
         }
       return message;
@@ -120,8 +121,8 @@ namespace VPContact
           {
             const std::string dim = (args.size() > 1 ? args[1] : "2");
             AssertThrow(dim == "2" || dim == "3",
-                        ExcMessage("--print-parameters takes 2 or 3, not '" +
-                                   dim + "'."));
+                        ExcMessage("--print-parameters takes 2 or 3, not '"
+                                   + dim + "'."));
             if (rank_zero)
               (dim == "2" ? print_parameters<2>() : print_parameters<3>());
             return 0;
@@ -132,8 +133,8 @@ namespace VPContact
 
         const std::string &filename = args[0];
         AssertThrow(std::ifstream(filename).good(),
-                    ExcMessage("Cannot open the parameter file '" + filename +
-                               "'. Check the path."));
+                    ExcMessage("Cannot open the parameter file '" + filename
+                               + "'. Check the path."));
         if (read_dimension(filename) == 2)
           run_scene<2>(filename, communicator);
         else
@@ -144,11 +145,11 @@ namespace VPContact
         std::ostringstream info;
         e.print_info(info);
         std::string message = info.str();
-        while (!message.empty() &&
-               (message.back() == '\n' || message.back() == ' '))
+        while (!message.empty()
+               && (message.back() == '\n' || message.back() == ' '))
           message.pop_back();
-        while (!message.empty() &&
-               (message.front() == '\n' || message.front() == ' '))
+        while (!message.empty()
+               && (message.front() == '\n' || message.front() == ' '))
           message.erase(0, 1);
         return report_error(shorten_paths(message), communicator);
       }

@@ -5,9 +5,7 @@
 #include <vpcontact/parsed_function.h>
 
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/fe/component_mask.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 namespace VPContact
@@ -19,14 +17,14 @@ namespace VPContact
     parse_id_list(const ParameterHandler &prm, const std::string &entry)
     {
       std::set<types::boundary_id> ids;
-      for (const int id :
-           Utilities::string_to_int(Utilities::split_string_list(prm.get(entry))))
+      for (const int id : Utilities::string_to_int(
+             Utilities::split_string_list(prm.get(entry))))
         {
           VPContactCheckParameter(ids.insert(id).second,
                                   "Boundary conditions/" + entry,
                                   prm.get(entry),
-                                  "boundary id " + std::to_string(id) +
-                                    " is listed twice.");
+                                  "boundary id " + std::to_string(id)
+                                    + " is listed twice.");
         }
       return ids;
     }
@@ -58,8 +56,7 @@ namespace VPContact
         "Roller boundary ids",
         "",
         Patterns::Map(Patterns::Integer(0, 254),
-                      Patterns::Selection(dim == 2 ? "x|y" :
-                                                     "x|y|z|xy|xz|yz")),
+                      Patterns::Selection(dim == 2 ? "x|y" : "x|y|z|xy|xz|yz")),
         "Boundary ids where only some displacement components vanish, as "
         "id:components pairs, e.g. '0:x, 2:y' (u_x = 0 on id 0, u_y = 0 on id "
         "2). The other components are traction free.");
@@ -74,7 +71,8 @@ namespace VPContact
                         "(u . nu = 0) with a foundation.");
       declare_function_entry(prm,
                              "Traction",
-                             "55*exp(t); 0" + std::string(dim == 3 ? "; 0" : ""),
+                             "55*exp(t); 0"
+                               + std::string(dim == 3 ? "; 0" : ""),
                              "Surface traction f_N on the traction boundary "
                              "[N/m^2].");
       declare_function_entry(prm,
@@ -107,17 +105,16 @@ namespace VPContact
     for (const std::string &pair :
          Utilities::split_string_list(prm.get("Roller boundary ids")))
       {
-        const auto key_value = Utilities::split_string_list(pair, ':');
+        const auto key_value        = Utilities::split_string_list(pair, ':');
         const types::boundary_id id = Utilities::string_to_int(key_value[0]);
         std::vector<bool>        mask(dim, false);
         for (const char c : key_value[1])
           mask[c - 'x'] = true;
-        VPContactCheckParameter(roller_ids.emplace(id, ComponentMask(mask))
-                                  .second,
-                                section + "/Roller boundary ids",
-                                prm.get("Roller boundary ids"),
-                                "boundary id " + std::to_string(id) +
-                                  " is listed twice.");
+        VPContactCheckParameter(
+          roller_ids.emplace(id, ComponentMask(mask)).second,
+          section + "/Roller boundary ids",
+          prm.get("Roller boundary ids"),
+          "boundary id " + std::to_string(id) + " is listed twice.");
         roller_text[id] = key_value[1];
       }
 
@@ -130,9 +127,9 @@ namespace VPContact
       VPContactCheckParameter(inserted,
                               section + "/" + entry,
                               prm.get(entry),
-                              "boundary id " + std::to_string(id) +
-                                " is also in '" + it->second +
-                                "'. A boundary id belongs to one part only.");
+                              "boundary id " + std::to_string(id)
+                                + " is also in '" + it->second
+                                + "'. A boundary id belongs to one part only.");
     };
     for (const auto id : clamped_ids)
       claim(id, "Clamped boundary ids");
@@ -147,13 +144,13 @@ namespace VPContact
     for (const std::string &pair :
          Utilities::split_string_list(prm.get("Function constants")))
       {
-        const auto key_value = Utilities::split_string_list(pair, ':');
+        const auto key_value    = Utilities::split_string_list(pair, ':');
         constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
       }
-    traction_function =
-      parse_function_entry<dim>(prm, section, "Traction", dim, constants);
-    body_force_function =
-      parse_function_entry<dim>(prm, section, "Body force", dim, constants);
+    traction_function
+      = parse_function_entry<dim>(prm, section, "Traction", dim, constants);
+    body_force_function
+      = parse_function_entry<dim>(prm, section, "Body force", dim, constants);
     body_force_is_zero = (prm.get("Body force") == zero_expression(dim));
     prm.leave_subsection();
   }
@@ -165,15 +162,15 @@ namespace VPContact
   BoundaryConditions<dim>::check_against_mesh(
     const std::set<types::boundary_id> &mesh_ids) const
   {
-    const auto check = [&](const types::boundary_id id,
-                           const std::string       &entry) {
-      VPContactCheckParameter(mesh_ids.count(id) == 1,
-                              "Boundary conditions/" + entry,
-                              std::to_string(id),
-                              "the mesh has no boundary with this id; its "
-                              "boundary ids are " +
-                                id_list_text(mesh_ids) + ".");
-    };
+    const auto check
+      = [&](const types::boundary_id id, const std::string &entry) {
+          VPContactCheckParameter(mesh_ids.count(id) == 1,
+                                  "Boundary conditions/" + entry,
+                                  std::to_string(id),
+                                  "the mesh has no boundary with this id; its "
+                                  "boundary ids are "
+                                    + id_list_text(mesh_ids) + ".");
+        };
     for (const auto id : clamped_ids)
       check(id, "Clamped boundary ids");
     for (const auto &[id, mask] : roller_ids)
@@ -203,8 +200,11 @@ namespace VPContact
                                                zero,
                                                constraints);
     for (const auto &[id, mask] : roller_ids)
-      VectorTools::interpolate_boundary_values(
-        dof_handler, id, zero, constraints, mask);
+      VectorTools::interpolate_boundary_values(dof_handler,
+                                               id,
+                                               zero,
+                                               constraints,
+                                               mask);
     if (!contact_ids.empty())
       VectorTools::compute_no_normal_flux_constraints(dof_handler,
                                                       0,
@@ -286,9 +286,9 @@ namespace VPContact
     std::string rollers;
     for (const auto &[id, text] : roller_text)
       rollers += (rollers.empty() ? "" : ",") + std::to_string(id) + ":" + text;
-    return "clamped " + id_list_text(clamped_ids) + ", rollers {" + rollers +
-           "}, traction " + id_list_text(traction_ids) + ", contact " +
-           id_list_text(contact_ids);
+    return "clamped " + id_list_text(clamped_ids) + ", rollers {" + rollers
+           + "}, traction " + id_list_text(traction_ids) + ", contact "
+           + id_list_text(contact_ids);
   }
 
 

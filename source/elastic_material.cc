@@ -12,12 +12,12 @@ namespace VPContact
     {
       prm.declare_entry("Young's modulus",
                         "1000",
-                        Patterns::Double(),
+                        Patterns::Double(0),
                         "Young's modulus E of the sound material [Pa = N/m^2]. "
                         "Must be positive.");
       prm.declare_entry("Poisson's ratio",
                         "0.37",
-                        Patterns::Double(),
+                        Patterns::Double(-1, 0.5),
                         "Poisson's ratio nu [-]. Must lie in (-1, 0.5).");
       prm.declare_entry("Plane hypothesis",
                         "plane stress",
@@ -39,8 +39,8 @@ namespace VPContact
     const double E_in  = prm.get_double("Young's modulus");
     const double nu_in = prm.get_double("Poisson's ratio");
     const auto   hyp   = (prm.get("Plane hypothesis") == "plane stress" ?
-                          PlaneHypothesis::plane_stress :
-                          PlaneHypothesis::plane_strain);
+                            PlaneHypothesis::plane_stress :
+                            PlaneHypothesis::plane_strain);
     prm.leave_subsection();
 
     VPContactCheckParameter(E_in > 0,
@@ -76,10 +76,10 @@ namespace VPContact
     // stress value in 2D plane stress.
     const double mu     = shear_modulus();
     const double lambda = first_lame_parameter();
-    elastic_tensor =
-      lambda * outer_product(unit_symmetric_tensor<dim>(),
-                             unit_symmetric_tensor<dim>()) +
-      2. * mu * identity_tensor<dim>();
+    elastic_tensor      = lambda
+                       * outer_product(unit_symmetric_tensor<dim>(),
+                                       unit_symmetric_tensor<dim>())
+                     + 2. * mu * identity_tensor<dim>();
   }
 
 

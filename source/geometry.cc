@@ -5,7 +5,6 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 
@@ -83,12 +82,10 @@ namespace VPContact
     prm.enter_subsection("Geometry");
     shape = (prm.get("Mesh") == "box" ? Shape::box : Shape::file);
 
-    const auto lower =
-      Utilities::string_to_double(Utilities::split_string_list(
-        prm.get("Lower corner")));
-    const auto upper =
-      Utilities::string_to_double(Utilities::split_string_list(
-        prm.get("Upper corner")));
+    const auto lower = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Lower corner")));
+    const auto upper = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Upper corner")));
     const auto subs = Utilities::string_to_int(
       Utilities::split_string_list(prm.get("Subdivisions")));
     for (unsigned int d = 0; d < dim; ++d)
@@ -99,8 +96,8 @@ namespace VPContact
                                 "Geometry/Upper corner",
                                 prm.get("Upper corner"),
                                 "every coordinate must exceed that of "
-                                "Geometry/Lower corner = " +
-                                  prm.get("Lower corner") + ".");
+                                "Geometry/Lower corner = "
+                                  + prm.get("Lower corner") + ".");
       }
     subdivisions.assign(subs.begin(), subs.end());
 
@@ -129,8 +126,11 @@ namespace VPContact
     parallel::distributed::Triangulation<dim> &triangulation) const
   {
     if (shape == Shape::box)
-      GridGenerator::subdivided_hyper_rectangle(
-        triangulation, subdivisions, lower_corner, upper_corner, true);
+      GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                subdivisions,
+                                                lower_corner,
+                                                upper_corner,
+                                                true);
     else
       {
         // Check the file ourselves first: GridIn's own message for a missing
@@ -151,11 +151,10 @@ namespace VPContact
         catch (const std::exception &e)
           {
             AssertThrow(false,
-                        ExcMessage("Geometry/Mesh file = " +
-                                   mesh_file_as_given +
-                                   ": GridIn could not read it as a " +
-                                   std::to_string(dim) +
-                                   "D mesh. Its message was:\n" + e.what()));
+                        ExcMessage("Geometry/Mesh file = " + mesh_file_as_given
+                                   + ": GridIn could not read it as a "
+                                   + std::to_string(dim)
+                                   + "D mesh. Its message was:\n" + e.what()));
           }
       }
     triangulation.refine_global(n_global_refinements);
@@ -174,8 +173,9 @@ namespace VPContact
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
             local.push_back(face->boundary_id());
-    const auto all = Utilities::MPI::compute_set_union(
-      local, triangulation.get_communicator());
+    const auto all
+      = Utilities::MPI::compute_set_union(local,
+                                          triangulation.get_communicator());
     return std::set<types::boundary_id>(all.begin(), all.end());
   }
 

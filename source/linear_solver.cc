@@ -40,8 +40,8 @@ namespace VPContact
   LinearSolver::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    solver_method      = (prm.get("Linear solver") == "direct" ? Method::direct :
-                                                                 Method::cg_amg);
+    solver_method = (prm.get("Linear solver") == "direct" ? Method::direct :
+                                                            Method::cg_amg);
     relative_tolerance = prm.get_double("Relative tolerance");
     max_iterations     = prm.get_integer("Maximum linear iterations");
     prm.leave_subsection();
@@ -74,7 +74,7 @@ namespace VPContact
     else
       {
         direct_control = std::make_unique<SolverControl>(1, 0);
-        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+        direct         = std::make_unique<TrilinosWrappers::SolverDirect>(
           *direct_control,
           TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
         direct->initialize(matrix);
@@ -113,18 +113,19 @@ namespace VPContact
       }
     catch (const SolverControl::NoConvergence &e)
       {
-        AssertThrow(false,
-                    ExcMessage(
-                      "CG did not converge: after " +
-                      std::to_string(e.last_step) + " iterations the "
-                      "residual is " + to_text(e.last_residual) +
-                      " > " + to_text(control.tolerance()) +
-                      " (Solver/Relative tolerance = " +
-                      to_text(relative_tolerance) + " times |b|). Raise "
-                      "Solver/Maximum linear iterations = " +
-                      std::to_string(max_iterations) +
-                      ", loosen the tolerance, or use Solver/Linear solver = "
-                      "direct on small meshes."));
+        AssertThrow(
+          false,
+          ExcMessage(
+            "CG did not converge: after " + std::to_string(e.last_step)
+            + " iterations the "
+              "residual is "
+            + to_text(e.last_residual) + " > " + to_text(control.tolerance())
+            + " (Solver/Relative tolerance = " + to_text(relative_tolerance)
+            + " times |b|). Raise "
+              "Solver/Maximum linear iterations = "
+            + std::to_string(max_iterations)
+            + ", loosen the tolerance, or use Solver/Linear solver = "
+              "direct on small meshes."));
       }
     return control.last_step();
   }

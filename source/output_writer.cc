@@ -18,15 +18,16 @@ namespace VPContact
       out << content;
       out.close();
       AssertThrow(out.good(),
-                  ExcMessage("Cannot write the file " + temporary +
-                             " (disk full or no permission?). The previous "
-                             "version of " + filename + " is left as it was."));
+                  ExcMessage("Cannot write the file " + temporary
+                             + " (disk full or no permission?). The previous "
+                               "version of "
+                             + filename + " is left as it was."));
     }
     std::error_code error;
     std::filesystem::rename(temporary, filename, error);
     AssertThrow(!error,
-                ExcMessage("Cannot rename " + temporary + " to " + filename +
-                           ": " + error.message()));
+                ExcMessage("Cannot rename " + temporary + " to " + filename
+                           + ": " + error.message()));
   }
 
 
@@ -109,8 +110,9 @@ namespace VPContact
     VPContactCheckParameter(problem.empty(),
                             "Output/Directory",
                             output_directory,
-                            problem + ". Give a folder that can be created "
-                                      "and written.");
+                            problem
+                              + ". Give a folder that can be created "
+                                "and written.");
   }
 
 
@@ -120,8 +122,7 @@ namespace VPContact
   OutputWriter<dim>::writes_fields_at(const unsigned int n,
                                       const unsigned int n_steps) const
   {
-    return output_every > 0 &&
-           (n % output_every == 0 || n == n_steps);
+    return output_every > 0 && (n % output_every == 0 || n == n_steps);
   }
 
 
@@ -133,8 +134,12 @@ namespace VPContact
                                   const double        time,
                                   const MPI_Comm      communicator)
   {
-    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-      output_directory + "/", "solution", n, communicator, 5);
+    const std::string pvtu
+      = data_out.write_vtu_with_pvtu_record(output_directory + "/",
+                                            "solution",
+                                            n,
+                                            communicator,
+                                            5);
     times_and_names.emplace_back(time, pvtu);
 
     if (Utilities::MPI::this_mpi_process(communicator) == 0)

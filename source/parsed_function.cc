@@ -4,7 +4,6 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/lac/vector.h>
 
 #include <iostream>
@@ -21,10 +20,10 @@ namespace VPContact
     prm.declare_entry(entry,
                       default_expression,
                       Patterns::Anything(),
-                      documentation +
-                        " An expression in x, y (z in 3D) and t with one "
-                        "component per coordinate direction, separated by "
-                        "';' (muParser syntax).");
+                      documentation
+                        + " An expression in x, y (z in 3D) and t with one "
+                          "component per coordinate direction, separated by "
+                          "';' (muParser syntax).");
   }
 
 
@@ -48,25 +47,25 @@ namespace VPContact
                        const unsigned int                   n_components,
                        const std::map<std::string, double> &constants)
   {
-    const std::string expression = prm.get(entry);
-    const std::string name       = section + "/" + entry;
-    const std::vector<std::string> parts =
-      Utilities::split_string_list(expression, ';');
+    const std::string              expression = prm.get(entry);
+    const std::string              name       = section + "/" + entry;
+    const std::vector<std::string> parts
+      = Utilities::split_string_list(expression, ';');
     VPContactCheckParameter(parts.size() == n_components,
                             name,
                             "'" + expression + "'",
-                            "expected " + std::to_string(n_components) +
-                              " components separated by ';', found " +
-                              std::to_string(parts.size()) + ".");
+                            "expected " + std::to_string(n_components)
+                              + " components separated by ';', found "
+                              + std::to_string(parts.size()) + ".");
 
-    const std::string variables =
-      (dim == 2 ? "x,y,t" : (dim == 3 ? "x,y,z,t" : "x,t"));
+    const std::string variables
+      = (dim == 2 ? "x,y,t" : (dim == 3 ? "x,y,z,t" : "x,t"));
     auto function = std::make_unique<FunctionParser<dim>>(n_components);
     // FunctionParser prints muParser's diagnostics to std::cerr before it
     // throws; keep them out of the screen output, our message has them.
     std::ostringstream    muparser_diagnostics;
-    std::streambuf *const cerr_buffer =
-      std::cerr.rdbuf(muparser_diagnostics.rdbuf());
+    std::streambuf *const cerr_buffer
+      = std::cerr.rdbuf(muparser_diagnostics.rdbuf());
     try
       {
         function->initialize(variables, parts, constants, true);
@@ -86,8 +85,8 @@ namespace VPContact
                     ExcMessage(parameter_message(
                       name,
                       "'" + expression + "'",
-                      "the expression does not parse; the variables are " +
-                        variables + ". muParser says:\n" + info.str())));
+                      "the expression does not parse; the variables are "
+                        + variables + ". muParser says:\n" + info.str())));
       }
     return function;
   }

@@ -3,9 +3,7 @@
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/timer.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
 
 #include <cmath>
@@ -44,8 +42,8 @@ namespace VPContact
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(communicator,
                     typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement |
-                      Triangulation<dim>::smoothing_on_coarsening))
+                      Triangulation<dim>::smoothing_on_refinement
+                      | Triangulation<dim>::smoothing_on_coarsening))
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
   {
@@ -73,7 +71,7 @@ namespace VPContact
     setup_dofs();
     assemble_stiffness_matrix();
     {
-      TimerOutput::Scope t(computing_timer, "Build preconditioner");
+      TimerOutput::Scope             t(computing_timer, "Build preconditioner");
       std::vector<std::vector<bool>> constant_modes;
       DoFTools::extract_constant_modes(dof_handler,
                                        ComponentMask(dim, true),
@@ -108,16 +106,17 @@ namespace VPContact
       TimerOutput::Scope t(computing_timer, "Solve");
       // The previous displacement is the start vector: in a slowly loaded
       // quasistatic run it is close to the new one.
-      last_linear_iterations =
-        linear_solver.solve(stiffness_matrix, displacement_owned, load_vector);
+      last_linear_iterations = linear_solver.solve(stiffness_matrix,
+                                                   displacement_owned,
+                                                   load_vector);
       constraints.distribute(displacement_owned);
     }
     AssertThrow(std::isfinite(displacement_owned.l2_norm()),
-                ExcMessage("The displacement of step " + std::to_string(n) +
-                           " (t = " + to_text(time_discretization.time(n)) +
-                           ") is not finite. The output up to the previous "
-                           "step is complete in " +
-                           output_writer.directory() + "."));
+                ExcMessage("The displacement of step " + std::to_string(n)
+                           + " (t = " + to_text(time_discretization.time(n))
+                           + ") is not finite. The output up to the previous "
+                             "step is complete in "
+                           + output_writer.directory() + "."));
     displacement = displacement_owned;
   }
 

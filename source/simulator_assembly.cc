@@ -3,9 +3,7 @@
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -19,8 +17,8 @@ namespace VPContact
 
     // K_ij = (E eps(phi_j), eps(phi_i)). The constraints are homogeneous, so
     // the matrix is the same for every load and is assembled once.
-    const QGauss<dim>  quadrature(fe.degree + 1);
-    FEValues<dim>      fe_values(fe,
+    const QGauss<dim>                quadrature(fe.degree + 1);
+    FEValues<dim>                    fe_values(fe,
                             quadrature,
                             update_gradients | update_JxW_values);
     const FEValuesExtractors::Vector u(0);
@@ -44,8 +42,8 @@ namespace VPContact
                 {
                   const SymmetricTensor<2, dim> E_eps_i = E * eps_phi[i];
                   for (unsigned int j = 0; j <= i; ++j)
-                    cell_matrix(i, j) +=
-                      (E_eps_i * eps_phi[j]) * fe_values.JxW(q);
+                    cell_matrix(i, j)
+                      += (E_eps_i * eps_phi[j]) * fe_values.JxW(q);
                 }
             }
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -72,15 +70,15 @@ namespace VPContact
     boundary_conditions.set_time(time);
     const QGauss<dim>     quadrature(fe.degree + 1);
     const QGauss<dim - 1> face_quadrature(fe.degree + 1);
-    const bool            with_body_force = boundary_conditions.has_body_force();
-    FEValues<dim>         fe_values(fe,
+    const bool        with_body_force = boundary_conditions.has_body_force();
+    FEValues<dim>     fe_values(fe,
                             quadrature,
-                            update_values | update_quadrature_points |
-                              update_JxW_values);
-    FEFaceValues<dim>     fe_face_values(fe,
+                            update_values | update_quadrature_points
+                              | update_JxW_values);
+    FEFaceValues<dim> fe_face_values(fe,
                                      face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
+                                     update_values | update_quadrature_points
+                                       | update_JxW_values);
     const FEValuesExtractors::Vector     u(0);
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     Vector<double>                       cell_rhs(dofs_per_cell);
@@ -92,7 +90,7 @@ namespace VPContact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_rhs = 0.;
+          cell_rhs      = 0.;
           bool has_load = false;
           if (with_body_force)
             {
@@ -100,32 +98,32 @@ namespace VPContact
               fe_values.reinit(cell);
               for (const unsigned int q : fe_values.quadrature_point_indices())
                 {
-                  boundary_conditions.body_force().vector_value(
-                    fe_values.quadrature_point(q), load);
+                  boundary_conditions.body_force()
+                    .vector_value(fe_values.quadrature_point(q), load);
                   for (unsigned int d = 0; d < dim; ++d)
                     load_tensor[d] = load[d];
                   for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    cell_rhs(i) += load_tensor * fe_values[u].value(i, q) *
-                                   fe_values.JxW(q);
+                    cell_rhs(i) += load_tensor * fe_values[u].value(i, q)
+                                   * fe_values.JxW(q);
                 }
             }
           for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                boundary_conditions.is_traction_boundary(face->boundary_id()))
+            if (face->at_boundary()
+                && boundary_conditions.is_traction_boundary(
+                  face->boundary_id()))
               {
                 has_load = true;
                 fe_face_values.reinit(cell, face);
                 for (const unsigned int q :
                      fe_face_values.quadrature_point_indices())
                   {
-                    boundary_conditions.traction().vector_value(
-                      fe_face_values.quadrature_point(q), load);
+                    boundary_conditions.traction()
+                      .vector_value(fe_face_values.quadrature_point(q), load);
                     for (unsigned int d = 0; d < dim; ++d)
                       load_tensor[d] = load[d];
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                      cell_rhs(i) += load_tensor *
-                                     fe_face_values[u].value(i, q) *
-                                     fe_face_values.JxW(q);
+                      cell_rhs(i) += load_tensor * fe_face_values[u].value(i, q)
+                                     * fe_face_values.JxW(q);
                   }
               }
           if (has_load)

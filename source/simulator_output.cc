@@ -4,9 +4,7 @@
 #include <vpcontact/stress_measures.h>
 
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/numerics/data_out.h>
 
 #include <cstdio>
@@ -23,8 +21,12 @@ namespace VPContact
     {
       if (dim == 2)
         return {"stress_xx", "stress_yy", "stress_xy"};
-      return {"stress_xx", "stress_yy", "stress_zz",
-              "stress_xy", "stress_xz", "stress_yz"};
+      return {"stress_xx",
+              "stress_yy",
+              "stress_zz",
+              "stress_xy",
+              "stress_xz",
+              "stress_yz"};
     }
 
     std::string
@@ -42,11 +44,12 @@ namespace VPContact
   void
   Simulator<dim>::print_header() const
   {
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const unsigned int n_ranks
+      = Utilities::MPI::n_mpi_processes(mpi_communicator);
     pcout << "vpcontact: " << dim << "D quasistatic linear elasticity ("
           << (dim == 3 ? "3D" :
-              material.plane_hypothesis() ==
-                  ElasticMaterial<dim>::PlaneHypothesis::plane_stress ?
+              material.plane_hypothesis()
+                  == ElasticMaterial<dim>::PlaneHypothesis::plane_stress ?
                          "plane stress" :
                          "plane strain")
           << "), E = " << material.youngs_modulus()
@@ -59,8 +62,7 @@ namespace VPContact
                 "none")
           << '\n'
           << "  mesh: " << triangulation.n_global_active_cells() << " cells, "
-          << dof_handler.n_dofs() << " dofs"
-          << '\n'
+          << dof_handler.n_dofs() << " dofs" << '\n'
           << "  time: T = " << time_discretization.end_time()
           << ", k = " << time_discretization.step_size() << ", "
           << time_discretization.n_steps() << " steps\n";
@@ -106,8 +108,8 @@ namespace VPContact
           const unsigned int index = cell->active_cell_index();
           von_mises(index)         = von_mises_norm(average);
           for (unsigned int c = 0; c < components.size(); ++c)
-            components[c](index) =
-              average[SymmetricTensor<2, dim>::unrolled_to_component_indices(
+            components[c](index)
+              = average[SymmetricTensor<2, dim>::unrolled_to_component_indices(
                 c)];
         }
   }
@@ -125,8 +127,8 @@ namespace VPContact
     Vector<double>              von_mises;
     std::vector<Vector<double>> components;
     compute_cell_stresses(von_mises, components);
-    const double von_mises_max =
-      Utilities::MPI::max(von_mises.linfty_norm(), mpi_communicator);
+    const double von_mises_max
+      = Utilities::MPI::max(von_mises.linfty_norm(), mpi_communicator);
 
     // The largest nodal displacement |u(x_i)|, over vertices.
     double u_max = 0;
@@ -136,8 +138,8 @@ namespace VPContact
           {
             double norm_square = 0;
             for (unsigned int d = 0; d < dim; ++d)
-              norm_square +=
-                std::pow(displacement(cell->vertex_dof_index(v, d)), 2);
+              norm_square
+                += std::pow(displacement(cell->vertex_dof_index(v, d)), 2);
             u_max = std::max(u_max, std::sqrt(norm_square));
           }
     u_max = Utilities::MPI::max(u_max, mpi_communicator);
@@ -156,25 +158,25 @@ namespace VPContact
     statistics.add_value("u_max", u_max);
     statistics.add_value("von_mises_max", von_mises_max);
 
-    std::string line = "step " + std::to_string(n) + "  t = " +
-                       format("%.6g", time) + "  |u|max = " +
-                       format("%.6e", u_max) + "  von Mises max = " +
-                       format("%.6e", von_mises_max);
+    std::string line = "step " + std::to_string(n)
+                       + "  t = " + format("%.6g", time)
+                       + "  |u|max = " + format("%.6e", u_max)
+                       + "  von Mises max = " + format("%.6e", von_mises_max);
     if (verification.is_active())
       {
-        const auto errors =
-          verification.compute_errors(dof_handler, displacement, time, u_max);
+        const auto errors
+          = verification.compute_errors(dof_handler, displacement, time, u_max);
         statistics.add_value("u_error_max_nodal", errors.max_nodal);
         statistics.add_value("u_error_L2", errors.l2);
         // Errors are round-off in verification scenes: printed with two
         // digits, they differ between runs only below numdiff's absolute
         // tolerance.
-        line += "  error: nodal max = " + format("%.2e", errors.max_nodal) +
-                ", L2 = " + format("%.2e", errors.l2);
+        line += "  error: nodal max = " + format("%.2e", errors.max_nodal)
+                + ", L2 = " + format("%.2e", errors.l2);
       }
     if (!output_writer.deterministic_screen_output() && n > 0)
-      line += "  CG its = " + std::to_string(last_linear_iterations) +
-              format("  (%.3f s)", step_wall_time);
+      line += "  CG its = " + std::to_string(last_linear_iterations)
+              + format("  (%.3f s)", step_wall_time);
     pcout << line << std::endl;
 
     if (output_writer.writes_fields_at(n, time_discretization.n_steps()))
@@ -197,8 +199,11 @@ namespace VPContact
       std::vector<std::string>(dim, "displacement"),
       DataOut<dim>::type_dof_data,
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-        dim, DataComponentInterpretation::component_is_part_of_vector));
-    data_out.add_data_vector(von_mises, "von_mises", DataOut<dim>::type_cell_data);
+        dim,
+        DataComponentInterpretation::component_is_part_of_vector));
+    data_out.add_data_vector(von_mises,
+                             "von_mises",
+                             DataOut<dim>::type_cell_data);
     const auto names = stress_component_names<dim>();
     for (unsigned int c = 0; c < components.size(); ++c)
       data_out.add_data_vector(components[c],
@@ -206,7 +211,9 @@ namespace VPContact
                                DataOut<dim>::type_cell_data);
     Vector<float> subdomain(triangulation.n_active_cells());
     subdomain = static_cast<float>(triangulation.locally_owned_subdomain());
-    data_out.add_data_vector(subdomain, "subdomain", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(subdomain,
+                             "subdomain",
+                             DataOut<dim>::type_cell_data);
     data_out.build_patches();
     output_writer.write_fields(data_out,
                                n,
@@ -223,7 +230,8 @@ namespace VPContact
     if (verification.is_active())
       pcout << '\n' << verification.summary();
     pcout << "\nRun complete: " << time_discretization.n_steps()
-          << " steps; statistics in " << "statistics.csv";
+          << " steps; statistics in "
+          << "statistics.csv";
     if (!output_writer.deterministic_screen_output())
       {
         pcout << " (folder " << output_writer.directory() << ")" << std::endl;

@@ -2,7 +2,6 @@
 #include <vpcontact/simulator.h>
 
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 

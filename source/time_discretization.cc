@@ -13,11 +13,11 @@ namespace VPContact
     {
       prm.declare_entry("End time",
                         "1",
-                        Patterns::Double(),
+                        Patterns::Double(0),
                         "Final time T [s]. Must be positive.");
       prm.declare_entry("Time step",
                         "0.01",
-                        Patterns::Double(),
+                        Patterns::Double(0),
                         "Time step k [s]; T must be a whole multiple of k "
                         "(the paper's uniform partition k = T/N).");
     }
@@ -41,8 +41,8 @@ namespace VPContact
     VPContactCheckParameter(k > 0 && k <= T,
                             "Time/Time step",
                             k,
-                            "the step must lie in (0, End time = " +
-                              to_text(T) + "].");
+                            "the step must lie in (0, End time = " + to_text(T)
+                              + "].");
     // A relative slack of 1e-9 accepts T = 1, k = 0.1 although 1/0.1 is not
     // exactly 10 in binary arithmetic.
     const double ratio = T / k;
@@ -50,16 +50,16 @@ namespace VPContact
     VPContactCheckParameter(std::abs(ratio - n_total) <= 1e-9 * ratio,
                             "Time/Time step",
                             k,
-                            "End time = " + to_text(T) +
-                              " is not a whole number of steps (T/k = " +
-                              to_text(ratio) +
-                              "). Choose k = T/N for an integer N.");
+                            "End time = " + to_text(T)
+                              + " is not a whole number of steps (T/k = "
+                              + to_text(ratio)
+                              + "). Choose k = T/N for an integer N.");
     VPContactCheckParameter(n_total <= 100000000u,
                             "Time/Time step",
                             k,
-                            "T/k = " + to_text(ratio) +
-                              " steps is more than this program allows "
-                              "(1e8). Choose a larger step.");
+                            "T/k = " + to_text(ratio)
+                              + " steps is more than this program allows "
+                                "(1e8). Choose a larger step.");
   }
 
 

@@ -35,8 +35,8 @@ namespace VPContact
   TrescaFriction<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    friction_bound =
-      parse_function_entry<dim>(prm, "Contact", "Friction bound", 1);
+    friction_bound
+      = parse_function_entry<dim>(prm, "Contact", "Friction bound", 1);
     prm.leave_subsection();
   }
 
@@ -51,9 +51,9 @@ namespace VPContact
   {
     // The smallest value over the contact vertices of this rank and the
     // given times; then over all ranks, so that every rank decides alike.
-    double      g_min = std::numeric_limits<double>::max();
-    Point<dim>  where;
-    double      when = 0;
+    double     g_min = std::numeric_limits<double>::max();
+    Point<dim> where;
+    double     when = 0;
     for (const double t : times)
       {
         friction_bound->set_time(t);
@@ -72,8 +72,8 @@ namespace VPContact
                       }
                   }
       }
-    const double global_min =
-      Utilities::MPI::min(g_min, triangulation.get_communicator());
+    const double global_min
+      = Utilities::MPI::min(g_min, triangulation.get_communicator());
     // The rank holding the minimum tells where it is.
     const unsigned int holder = Utilities::MPI::min(
       g_min == global_min ?
@@ -82,14 +82,17 @@ namespace VPContact
       triangulation.get_communicator());
     std::ostringstream location;
     location << "(" << where << ") at t = " << when;
-    const std::string text = Utilities::MPI::broadcast(
-      triangulation.get_communicator(), location.str(), holder);
+    const std::string text
+      = Utilities::MPI::broadcast(triangulation.get_communicator(),
+                                  location.str(),
+                                  holder);
     VPContactCheckParameter(global_min >= 0,
                             "Contact/Friction bound",
                             global_min,
                             "the friction bound must be non-negative and "
                             "finite on the contact boundary; this is its "
-                            "value at x = " + text + ".");
+                            "value at x = "
+                              + text + ".");
   }
 
 

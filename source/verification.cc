@@ -3,9 +3,7 @@
 #include <vpcontact/verification.h>
 
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/lac/vector.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
@@ -48,11 +46,14 @@ namespace VPContact
         for (const std::string &pair :
              Utilities::split_string_list(prm.get("Function constants")))
           {
-            const auto key_value = Utilities::split_string_list(pair, ':');
+            const auto key_value    = Utilities::split_string_list(pair, ':');
             constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
           }
-        exact_displacement = parse_function_entry<dim>(
-          prm, "Verification", "Exact displacement", dim, constants);
+        exact_displacement = parse_function_entry<dim>(prm,
+                                                       "Verification",
+                                                       "Exact displacement",
+                                                       dim,
+                                                       constants);
       }
     else
       exact_displacement.reset();
@@ -81,7 +82,7 @@ namespace VPContact
     Assert(is_active(), ExcInternalError());
     exact_displacement->set_time(time);
 
-    Errors errors;
+    Errors                        errors;
     TrilinosWrappers::MPI::Vector nodal(dof_handler.locally_owned_dofs(),
                                         solution.get_mpi_communicator());
     VectorTools::interpolate(dof_handler, *exact_displacement, nodal);
@@ -97,8 +98,10 @@ namespace VPContact
                                       cellwise,
                                       QGauss<dim>(3),
                                       VectorTools::L2_norm);
-    errors.l2 = VectorTools::compute_global_error(
-      dof_handler.get_triangulation(), cellwise, VectorTools::L2_norm);
+    errors.l2
+      = VectorTools::compute_global_error(dof_handler.get_triangulation(),
+                                          cellwise,
+                                          VectorTools::L2_norm);
     max_nodal_error  = std::max(max_nodal_error, errors.max_nodal);
     max_displacement = std::max(max_displacement, u_max);
     return errors;
@@ -110,9 +113,9 @@ namespace VPContact
   std::string
   Verification<dim>::summary() const
   {
-    const double relative =
-      (max_displacement > 0 ? max_nodal_error / max_displacement :
-                              max_nodal_error);
+    const double relative
+      = (max_displacement > 0 ? max_nodal_error / max_displacement :
+                                max_nodal_error);
     char buffer[160];
     std::snprintf(buffer,
                   sizeof(buffer),

@@ -6,9 +6,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/affine_constraints.h>
 
 #include <map>
@@ -89,14 +87,14 @@ namespace VPContact
     summary() const;
 
   private:
-    std::set<types::boundary_id>                 clamped_ids;
-    std::map<types::boundary_id, ComponentMask>  roller_ids;
-    std::map<types::boundary_id, std::string>    roller_text;
-    std::set<types::boundary_id>                 traction_ids;
-    std::set<types::boundary_id>                 contact_ids;
-    std::unique_ptr<FunctionParser<dim>>         traction_function;
-    std::unique_ptr<FunctionParser<dim>>         body_force_function;
-    bool                                         body_force_is_zero = true;
+    std::set<types::boundary_id>                clamped_ids;
+    std::map<types::boundary_id, ComponentMask> roller_ids;
+    std::map<types::boundary_id, std::string>   roller_text;
+    std::set<types::boundary_id>                traction_ids;
+    std::set<types::boundary_id>                contact_ids;
+    std::unique_ptr<FunctionParser<dim>>        traction_function;
+    std::unique_ptr<FunctionParser<dim>>        body_force_function;
+    bool                                        body_force_is_zero = true;
   };
 } // namespace VPContact
 

@@ -71,8 +71,8 @@ namespace VPContact
     plane_hypothesis() const;
 
   private:
-    double                  E  = 1.;
-    double                  nu = 0.;
+    double                  E          = 1.;
+    double                  nu         = 0.;
     PlaneHypothesis         hypothesis = PlaneHypothesis::plane_stress;
     SymmetricTensor<4, dim> elastic_tensor;
   };

@@ -6,7 +6,6 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
-
 #include <deal.II/distributed/tria.h>
 
 #include <set>
@@ -35,7 +34,8 @@ namespace VPContact
     /// Read the section; relative mesh file names are taken from
     /// @p parameter_directory, the folder of the parameter file.
     void
-    parse_parameters(ParameterHandler &prm, const std::string &parameter_directory);
+    parse_parameters(ParameterHandler  &prm,
+                     const std::string &parameter_directory);
 
     /**
      * Fill @p triangulation with the coarse mesh and refine it. Throws with a
@@ -64,8 +64,8 @@ namespace VPContact
     std::vector<unsigned int> subdivisions;
     std::string               mesh_file;
     /// The entry as the user wrote it, for messages.
-    std::string               mesh_file_as_given;
-    unsigned int              n_global_refinements = 0;
+    std::string  mesh_file_as_given;
+    unsigned int n_global_refinements = 0;
   };
 } // namespace VPContact
 

@@ -43,7 +43,9 @@ namespace VPContact
  */
 #define VPContactCheckParameter(cond, section_and_entry, value, remedy) \
   AssertThrow(cond,                                                     \
-              dealii::ExcMessage(VPContact::parameter_message(          \
-                section_and_entry, VPContact::to_text(value), remedy)))
+              dealii::ExcMessage(                                       \
+                VPContact::parameter_message(section_and_entry,         \
+                                             VPContact::to_text(value), \
+                                             remedy)))
 
 #endif

@@ -4,7 +4,6 @@
 #define vpcontact_linear_solver_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -64,9 +63,9 @@ namespace VPContact
     method() const;
 
   private:
-    Method       solver_method        = Method::cg_amg;
-    double       relative_tolerance   = 1e-10;
-    unsigned int max_iterations       = 1000;
+    Method       solver_method      = Method::cg_amg;
+    double       relative_tolerance = 1e-10;
+    unsigned int max_iterations     = 1000;
 
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::unique_ptr<SolverControl>                     direct_control;

@@ -7,7 +7,6 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/numerics/data_out.h>
 
 #include <string>
@@ -81,7 +80,8 @@ namespace VPContact
    * file. Throws with the file's name if it cannot be written.
    */
   void
-  write_file_atomically(const std::string &filename, const std::string &content);
+  write_file_atomically(const std::string &filename,
+                        const std::string &content);
 } // namespace VPContact
 
 #endif

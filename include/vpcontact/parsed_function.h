@@ -31,10 +31,10 @@ namespace VPContact
    */
   template <int dim>
   std::unique_ptr<FunctionParser<dim>>
-  parse_function_entry(const ParameterHandler &prm,
-                       const std::string      &section,
-                       const std::string      &entry,
-                       const unsigned int      n_components,
+  parse_function_entry(const ParameterHandler              &prm,
+                       const std::string                   &section,
+                       const std::string                   &entry,
+                       const unsigned int                   n_components,
                        const std::map<std::string, double> &constants = {});
 
   /// The zero expression with @p n components: "0; 0" for n = 2.

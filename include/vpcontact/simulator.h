@@ -17,13 +17,9 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -101,8 +97,8 @@ namespace VPContact
     void
     print_summary() const;
 
-    MPI_Comm           mpi_communicator;
-    ConditionalOStream pcout;
+    MPI_Comm            mpi_communicator;
+    ConditionalOStream  pcout;
     mutable TimerOutput computing_timer;
 
     // The physics modules, each owning its section of the parameter file.

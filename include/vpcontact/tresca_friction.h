@@ -6,7 +6,6 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
-
 #include <deal.II/distributed/tria.h>
 
 #include <memory>

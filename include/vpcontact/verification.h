@@ -5,9 +5,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
@@ -64,7 +62,7 @@ namespace VPContact
     /// and the solver tolerances the verification scenes use.
     static constexpr double round_off_level = 1e-10;
 
-    double max_nodal_error = 0;
+    double max_nodal_error  = 0;
     double max_displacement = 0;
 
     std::unique_ptr<FunctionParser<dim>> exact_displacement;

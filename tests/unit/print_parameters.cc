@@ -1,7 +1,8 @@
-// Checks that --print-parameters output is a valid parameter file: the full
+// Checks that the --print-parameters listing is a valid parameter file: the
 // listing of every declared entry (2D and 3D) is read back by a fresh
 // ParameterHandler without error, and every section named in the
 // documentation is there.
+#include <vpcontact/parameter_listing.h>
 #include <vpcontact/simulator.h>
 
 #include <iostream>
@@ -16,19 +17,24 @@ check()
   ParameterHandler prm;
   Simulator<dim>::declare_parameters(prm);
   std::ostringstream listing;
-  prm.print_parameters(listing, ParameterHandler::PRM);
+  print_parameter_listing(prm, listing);
 
   ParameterHandler reread;
   Simulator<dim>::declare_parameters(reread);
   reread.parse_input_from_string(listing.str());
   std::cout << dim << "D listing re-read: ok" << std::endl;
 
-  for (const std::string section :
-       {"Geometry", "Material", "Boundary conditions", "Contact", "Time",
-        "Solver", "Output", "Verification"})
+  for (const std::string section : {"Geometry",
+                                    "Material",
+                                    "Boundary conditions",
+                                    "Contact",
+                                    "Time",
+                                    "Solver",
+                                    "Output",
+                                    "Verification"})
     std::cout << "  section " << section << ": "
-              << (listing.str().find("subsection " + section) !=
-                      std::string::npos ?
+              << (listing.str().find("subsection " + section)
+                      != std::string::npos ?
                     "present" :
                     "MISSING")
               << std::endl;

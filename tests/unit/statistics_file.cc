@@ -61,8 +61,8 @@ main(int argc, char **argv)
       std::string   line;
       std::getline(in, line);
       std::cout << "header: " << line << '\n';
-      const auto columns = Utilities::split_string_list(line, ',');
-      unsigned int n_rows = 0;
+      const auto   columns = Utilities::split_string_list(line, ',');
+      unsigned int n_rows  = 0;
       while (std::getline(in, line))
         {
           const auto values = Utilities::split_string_list(line, ',');

@@ -15,7 +15,7 @@ main()
   SymmetricTensor<2, 2> shear;
   shear[0][1] = 2.;
   SymmetricTensor<2, 2> biaxial;
-  biaxial[0][0] = biaxial[1][1] = 5.;
+  biaxial[0][0] = biaxial[1][1]           = 5.;
   const SymmetricTensor<2, 3> hydrostatic = 3. * unit_symmetric_tensor<3>();
 
   std::printf("uniaxial: %.12g (expected 7)\n", von_mises_norm(uniaxial));

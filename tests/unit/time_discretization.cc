@@ -23,9 +23,8 @@ try_grid(const std::string &end_time, const std::string &step)
     {
       time.parse_parameters(prm);
       std::cout << "T = " << end_time << ", k = " << step
-                << ": N = " << time.n_steps()
-                << ", t_N == T: " << (time.time(time.n_steps()) ==
-                                      time.end_time())
+                << ": N = " << time.n_steps() << ", t_N == T: "
+                << (time.time(time.n_steps()) == time.end_time())
                 << ", t_3 = " << time.time(3) << std::endl;
     }
   catch (const ExceptionBase &e)

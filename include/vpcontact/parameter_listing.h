@@ -1,0 +1,23 @@
+// The --print-parameters listing: every entry with its default, its allowed
+// values and its documentation, written as a valid parameter file.
+#ifndef vpcontact_parameter_listing_h
+#define vpcontact_parameter_listing_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ostream>
+
+namespace VPContact
+{
+  /**
+   * Write every entry declared in @p prm as `set Name = default`, preceded
+   * by comment lines with its documentation and its allowed values.
+   * ParameterHandler's own PRM style leaves the allowed values out, so the
+   * listing is built from its JSON form, which has them.
+   */
+  void
+  print_parameter_listing(const dealii::ParameterHandler &prm,
+                          std::ostream                   &out);
+} // namespace VPContact
+
+#endif
