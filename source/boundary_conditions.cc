@@ -60,6 +60,21 @@ namespace VPContact
         "Boundary ids where only some displacement components vanish, as "
         "id:components pairs, e.g. '0:x, 2:y' (u_x = 0 on id 0, u_y = 0 on id "
         "2). The other components are traction free.");
+      prm.declare_entry(
+        "Prescribed displacement boundary ids",
+        "",
+        Patterns::Map(Patterns::Integer(0, 254),
+                      Patterns::Selection(dim == 2 ? "x|y|xy" :
+                                                     "x|y|z|xy|xz|yz|xyz")),
+        "Boundary ids where the listed displacement components follow "
+        "'Prescribed displacement', as id:components pairs, e.g. '1:x'. The "
+        "other components are traction free.");
+      declare_function_entry(prm,
+                             "Prescribed displacement",
+                             zero_expression(dim),
+                             "Displacement g(x, t) imposed on the prescribed "
+                             "boundary components [m] (only the listed "
+                             "components are used).");
       prm.declare_entry("Traction boundary ids",
                         "1",
                         id_list,
@@ -100,23 +115,33 @@ namespace VPContact
     traction_ids = parse_id_list(prm, "Traction boundary ids");
     contact_ids  = parse_id_list(prm, "Contact boundary ids");
 
-    roller_ids.clear();
-    roller_text.clear();
-    for (const std::string &pair :
-         Utilities::split_string_list(prm.get("Roller boundary ids")))
-      {
-        const auto key_value        = Utilities::split_string_list(pair, ':');
-        const types::boundary_id id = Utilities::string_to_int(key_value[0]);
-        std::vector<bool>        mask(dim, false);
-        for (const char c : key_value[1])
-          mask[c - 'x'] = true;
-        VPContactCheckParameter(
-          roller_ids.emplace(id, ComponentMask(mask)).second,
-          section + "/Roller boundary ids",
-          prm.get("Roller boundary ids"),
-          "boundary id " + std::to_string(id) + " is listed twice.");
-        roller_text[id] = key_value[1];
-      }
+    const auto parse_component_map =
+      [&](const std::string                           &entry,
+          std::map<types::boundary_id, ComponentMask> &ids,
+          std::map<types::boundary_id, std::string>   &text) {
+        ids.clear();
+        text.clear();
+        for (const std::string &pair :
+             Utilities::split_string_list(prm.get(entry)))
+          {
+            const auto key_value = Utilities::split_string_list(pair, ':');
+            const types::boundary_id id =
+              Utilities::string_to_int(key_value[0]);
+            std::vector<bool> mask(dim, false);
+            for (const char c : key_value[1])
+              mask[c - 'x'] = true;
+            VPContactCheckParameter(ids.emplace(id, ComponentMask(mask)).second,
+                                    section + "/" + entry,
+                                    prm.get(entry),
+                                    "boundary id " + std::to_string(id) +
+                                      " is listed twice.");
+            text[id] = key_value[1];
+          }
+      };
+    parse_component_map("Roller boundary ids", roller_ids, roller_text);
+    parse_component_map("Prescribed displacement boundary ids",
+                        prescribed_ids,
+                        prescribed_text);
 
     // A boundary id belongs to one part only: two conditions on the same
     // face would make the problem ill posed or silently drop one of them.
@@ -135,6 +160,8 @@ namespace VPContact
       claim(id, "Clamped boundary ids");
     for (const auto &[id, mask] : roller_ids)
       claim(id, "Roller boundary ids");
+    for (const auto &[id, mask] : prescribed_ids)
+      claim(id, "Prescribed displacement boundary ids");
     for (const auto id : traction_ids)
       claim(id, "Traction boundary ids");
     for (const auto id : contact_ids)
@@ -152,6 +179,8 @@ namespace VPContact
     body_force_function
       = parse_function_entry<dim>(prm, section, "Body force", dim, constants);
     body_force_is_zero = (prm.get("Body force") == zero_expression(dim));
+    prescribed_function = parse_function_entry<dim>(
+      prm, section, "Prescribed displacement", dim, constants);
     prm.leave_subsection();
   }
 
@@ -175,6 +204,8 @@ namespace VPContact
       check(id, "Clamped boundary ids");
     for (const auto &[id, mask] : roller_ids)
       check(id, "Roller boundary ids");
+    for (const auto &[id, mask] : prescribed_ids)
+      check(id, "Prescribed displacement boundary ids");
     for (const auto id : traction_ids)
       check(id, "Traction boundary ids");
     for (const auto id : contact_ids)
@@ -186,8 +217,10 @@ namespace VPContact
   template <int dim>
   void
   BoundaryConditions<dim>::make_constraints(
-    const DoFHandler<dim>     &dof_handler,
-    AffineConstraints<double> &constraints) const
+    const DoFHandler<dim>                &dof_handler,
+    AffineConstraints<double>            &constraints,
+    const double                          time,
+    const TrilinosWrappers::MPI::Vector *previous_displacement) const
   {
     // Dirichlet parts first: interpolate_boundary_values leaves alone the
     // degrees of freedom that are already constrained, and so does the
@@ -200,16 +233,45 @@ namespace VPContact
                                                zero,
                                                constraints);
     for (const auto &[id, mask] : roller_ids)
-      VectorTools::interpolate_boundary_values(dof_handler,
-                                               id,
-                                               zero,
-                                               constraints,
-                                               mask);
+      VectorTools::interpolate_boundary_values(
+        dof_handler, id, zero, constraints, mask);
+
+    // Prescribed displacements: the increment of a step is g(t_n) minus the
+    // current nodal value, so that u_n = g(t_n) holds exactly even if u_0
+    // did not satisfy g(0).
+    if (!prescribed_ids.empty())
+      {
+        prescribed_function->set_time(time);
+        std::map<types::global_dof_index, double> values;
+        for (const auto &[id, mask] : prescribed_ids)
+          VectorTools::interpolate_boundary_values(
+            dof_handler, id, *prescribed_function, values, mask);
+        for (const auto &[dof, value] : values)
+          if (constraints.can_store_line(dof) &&
+              !constraints.is_constrained(dof))
+            {
+              constraints.add_line(dof);
+              constraints.set_inhomogeneity(
+                dof,
+                value - (previous_displacement ? (*previous_displacement)(dof) :
+                                                 0.));
+            }
+      }
+
     if (!contact_ids.empty())
       VectorTools::compute_no_normal_flux_constraints(dof_handler,
                                                       0,
                                                       contact_ids,
                                                       constraints);
+  }
+
+
+
+  template <int dim>
+  bool
+  BoundaryConditions<dim>::has_prescribed_displacement() const
+  {
+    return !prescribed_ids.empty();
   }
 
 

@@ -1,9 +1,12 @@
-// The simulator's parameters, construction, and time loop.
+// The simulator's parameters, construction, and time loop: the steps of the
+// paper's scheme (14) in order.
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/timer.h>
+
 #include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/fe/fe_q.h>
 
 #include <cmath>
@@ -20,8 +23,10 @@ namespace VPContact
                       "Space dimension of the scene: 2 or 3.");
     Geometry<dim>::declare_parameters(prm);
     ElasticMaterial<dim>::declare_parameters(prm);
+    ViscoplasticityParameters<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm);
     TrescaFriction<dim>::declare_parameters(prm);
+    InitialConditions::declare_parameters(prm);
     TimeDiscretization::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
@@ -42,19 +47,46 @@ namespace VPContact
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(communicator,
                     typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement
-                      | Triangulation<dim>::smoothing_on_coarsening))
+                      Triangulation<dim>::smoothing_on_refinement |
+                      Triangulation<dim>::smoothing_on_coarsening))
     , fe(FE_Q<dim>(1), dim)
+    , quadrature(2)
     , dof_handler(triangulation)
   {
     geometry.parse_parameters(prm, parameter_directory);
     material.parse_parameters(prm);
+    viscoplasticity.parse_parameters(prm);
+    viscoplastic_law = viscoplasticity.create_law();
     boundary_conditions.parse_parameters(prm);
     friction.parse_parameters(prm);
+    initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm);
+    check_stability_limits();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_stability_limits() const
+  {
+    // The forward Euler step of sigma_dot = G(sigma) amplifies an error by
+    // 1 - k L_G for a law with Lipschitz constant L_G; beyond k = 2 / L_G it
+    // grows without bound. Refuse such a step before computing anything.
+    const double k     = time_discretization.step_size();
+    const double limit = viscoplastic_law->explicit_step_limit();
+    VPContactCheckParameter(
+      k <= limit,
+      "Time/Time step",
+      k,
+      "the explicit (forward Euler) viscoplastic step is unstable for this "
+      "law (" + viscoplastic_law->description() + ") when k > " +
+        to_text(limit) + " (2 / Lipschitz constant of G; for Maxwell 2 eta). "
+        "Choose Time step <= " + to_text(limit) +
+        ", or a slower law (larger Viscoplasticity/Relaxation time).");
   }
 
 
@@ -69,6 +101,7 @@ namespace VPContact
     output_writer.prepare_directory(mpi_communicator);
     make_mesh();
     setup_dofs();
+    setup_stress_history();
     assemble_stiffness_matrix();
     {
       TimerOutput::Scope             t(computing_timer, "Build preconditioner");
@@ -80,11 +113,8 @@ namespace VPContact
     }
     print_header();
 
-    // The initial state u_0 = 0 of the paper.
-    displacement_owned = 0.;
-    displacement       = displacement_owned;
+    compute_initial_state();
     postprocess_step(0, 0.);
-
     for (unsigned int n = 1; n <= time_discretization.n_steps(); ++n)
       {
         Timer step_timer;
@@ -99,24 +129,56 @@ namespace VPContact
 
   template <int dim>
   void
+  Simulator<dim>::compute_initial_state()
+  {
+    // u_0 = 0 and sigma_0 = 0 (set up by setup_dofs and setup_stress_history)
+    // are the paper's data. Elastic equilibrium solves the elastic problem
+    // with the load at t = 0, starting from that zero state, without the
+    // viscoplastic rate: then sigma_0 = E eps(u_0).
+    last_linear_iterations = 0;
+    if (initial_conditions.elastic_equilibrium())
+      {
+        solve_increment(0., false);
+        update_stress(0);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::solve_step(const unsigned int n)
   {
-    assemble_load_vector(time_discretization.time(n));
+    solve_increment(time_discretization.time(n), true);
+    update_stress(n);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_increment(const double time,
+                                  const bool   with_viscoplastic_rate)
+  {
+    if (boundary_conditions.has_prescribed_displacement())
+      make_constraints(time, &displacement);
+    assemble_rhs(time, with_viscoplastic_rate);
     {
       TimerOutput::Scope t(computing_timer, "Solve");
-      // The previous displacement is the start vector: in a slowly loaded
-      // quasistatic run it is close to the new one.
-      last_linear_iterations = linear_solver.solve(stiffness_matrix,
-                                                   displacement_owned,
-                                                   load_vector);
-      constraints.distribute(displacement_owned);
+      // The previous increment is the start vector: in a slowly loaded
+      // quasistatic run consecutive increments are alike.
+      last_linear_iterations =
+        linear_solver.solve(stiffness_matrix, increment_owned, rhs);
+      constraints.distribute(increment_owned);
     }
-    AssertThrow(std::isfinite(displacement_owned.l2_norm()),
-                ExcMessage("The displacement of step " + std::to_string(n)
-                           + " (t = " + to_text(time_discretization.time(n))
-                           + ") is not finite. The output up to the previous "
-                             "step is complete in "
-                           + output_writer.directory() + "."));
+    AssertThrow(std::isfinite(increment_owned.l2_norm()),
+                ExcMessage("The displacement increment at t = " +
+                           to_text(time) +
+                           " is not finite. The output up to the previous "
+                           "step is complete in " +
+                           output_writer.directory() + "."));
+    increment = increment_owned;
+    displacement_owned += increment_owned;
     displacement = displacement_owned;
   }
 

@@ -1,55 +1,73 @@
 // The simulator's assembly: the elastic stiffness matrix (once per mesh) and
-// the load vector (once per step).
+// the right-hand side of a step, which carries the stress history.
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/fe/fe_values.h>
+
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 namespace VPContact
 {
+  namespace
+  {
+    // The element matrix (E eps(phi_j), eps(phi_i)) of the cell that
+    // @p fe_values was last reinitialized on.
+    template <int dim>
+    void
+    elastic_cell_matrix(const FEValues<dim>           &fe_values,
+                        const SymmetricTensor<4, dim> &E,
+                        FullMatrix<double>            &cell_matrix)
+    {
+      const FEValuesExtractors::Vector     u(0);
+      const unsigned int                   n = cell_matrix.m();
+      std::vector<SymmetricTensor<2, dim>> eps_phi(n);
+      cell_matrix = 0.;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            eps_phi[i] = fe_values[u].symmetric_gradient(i, q);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const SymmetricTensor<2, dim> E_eps_i = E * eps_phi[i];
+              for (unsigned int j = 0; j <= i; ++j)
+                cell_matrix(i, j) += (E_eps_i * eps_phi[j]) * fe_values.JxW(q);
+            }
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = i + 1; j < n; ++j)
+          cell_matrix(i, j) = cell_matrix(j, i);
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Simulator<dim>::assemble_stiffness_matrix()
   {
     TimerOutput::Scope t(computing_timer, "Assemble matrix");
 
-    // K_ij = (E eps(phi_j), eps(phi_i)). The constraints are homogeneous, so
-    // the matrix is the same for every load and is assembled once.
-    const QGauss<dim>                quadrature(fe.degree + 1);
-    FEValues<dim>                    fe_values(fe,
+    // K_ij = (E eps(phi_j), eps(phi_i)): the paper's matrix k E divided by
+    // k, since the unknown is the increment k w. It does not change while
+    // the mesh is fixed, and neither does the structure of the constraints,
+    // so it is assembled once.
+    FEValues<dim> fe_values(fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector u(0);
-    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(dofs_per_cell,
+                                   dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    std::vector<SymmetricTensor<2, dim>> eps_phi(dofs_per_cell);
-    const SymmetricTensor<4, dim>       &E = material.stiffness();
 
     stiffness_matrix = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          cell_matrix = 0.;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                eps_phi[i] = fe_values[u].symmetric_gradient(i, q);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const SymmetricTensor<2, dim> E_eps_i = E * eps_phi[i];
-                  for (unsigned int j = 0; j <= i; ++j)
-                    cell_matrix(i, j)
-                      += (E_eps_i * eps_phi[j]) * fe_values.JxW(q);
-                }
-            }
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
-              cell_matrix(i, j) = cell_matrix(j, i);
-
+          elastic_cell_matrix(fe_values, material.stiffness(), cell_matrix);
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(cell_matrix,
                                                  dof_indices,
@@ -62,79 +80,109 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::assemble_load_vector(const double time)
+  Simulator<dim>::assemble_rhs(const double time,
+                               const bool   with_viscoplastic_rate)
   {
-    TimerOutput::Scope t(computing_timer, "Assemble load");
+    TimerOutput::Scope t(computing_timer, "Assemble right-hand side");
 
-    // b_i = (f_B(t), phi_i) + (f_N(t), phi_i)_{Gamma_N}.
+    // b_i = (f_B(t_n), phi_i) + (f_N(t_n), phi_i)_{Gamma_N}
+    //       - (sigma_{n-1} + k G_{n-1}, eps(phi_i)).
+    // The predictor sigma_{n-1} + k G_{n-1} is stored at each quadrature
+    // point for the stress update; G is evaluated only for a law that is
+    // not zero, with the state of step n-1 (forward Euler).
     boundary_conditions.set_time(time);
-    const QGauss<dim>     quadrature(fe.degree + 1);
+    const double k = time_discretization.step_size();
+    const bool   evaluate_rate =
+      with_viscoplastic_rate && !viscoplastic_law->is_zero();
     const QGauss<dim - 1> face_quadrature(fe.degree + 1);
-    const bool        with_body_force = boundary_conditions.has_body_force();
-    FEValues<dim>     fe_values(fe,
+    FEValues<dim>         fe_values(fe,
                             quadrature,
-                            update_values | update_quadrature_points
-                              | update_JxW_values);
-    FEFaceValues<dim> fe_face_values(fe,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim>     fe_face_values(fe,
                                      face_quadrature,
-                                     update_values | update_quadrature_points
-                                       | update_JxW_values);
+                                     update_values | update_quadrature_points |
+                                       update_JxW_values);
     const FEValuesExtractors::Vector     u(0);
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     Vector<double>                       cell_rhs(dofs_per_cell);
+    FullMatrix<double>                   cell_matrix(dofs_per_cell,
+                                   dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     Vector<double>                       load(dim);
     Tensor<1, dim>                       load_tensor;
 
-    load_vector = 0.;
+    rhs = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_rhs      = 0.;
-          bool has_load = false;
-          if (with_body_force)
+          cell_rhs = 0.;
+          fe_values.reinit(cell);
+          if (evaluate_rate)
+            fe_values[u].get_function_symmetric_gradients(displacement,
+                                                          strains);
+          const auto history = stress_history.get_data(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
             {
-              has_load = true;
-              fe_values.reinit(cell);
-              for (const unsigned int q : fe_values.quadrature_point_indices())
+              auto &point     = *history[q];
+              point.predictor = point.stress;
+              if (evaluate_rate)
+                point.predictor +=
+                  k * viscoplastic_law->rate(point.stress, strains[q], 1.);
+              Tensor<1, dim> body_force;
+              if (boundary_conditions.has_body_force())
                 {
-                  boundary_conditions.body_force()
-                    .vector_value(fe_values.quadrature_point(q), load);
+                  boundary_conditions.body_force().vector_value(
+                    fe_values.quadrature_point(q), load);
                   for (unsigned int d = 0; d < dim; ++d)
-                    load_tensor[d] = load[d];
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    cell_rhs(i) += load_tensor * fe_values[u].value(i, q)
-                                   * fe_values.JxW(q);
+                    body_force[d] = load[d];
                 }
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                cell_rhs(i) +=
+                  (body_force * fe_values[u].value(i, q) -
+                   point.predictor * fe_values[u].symmetric_gradient(i, q)) *
+                  fe_values.JxW(q);
             }
+
           for (const auto &face : cell->face_iterators())
-            if (face->at_boundary()
-                && boundary_conditions.is_traction_boundary(
-                  face->boundary_id()))
+            if (face->at_boundary() &&
+                boundary_conditions.is_traction_boundary(face->boundary_id()))
               {
-                has_load = true;
                 fe_face_values.reinit(cell, face);
                 for (const unsigned int q :
                      fe_face_values.quadrature_point_indices())
                   {
-                    boundary_conditions.traction()
-                      .vector_value(fe_face_values.quadrature_point(q), load);
+                    boundary_conditions.traction().vector_value(
+                      fe_face_values.quadrature_point(q), load);
                     for (unsigned int d = 0; d < dim; ++d)
                       load_tensor[d] = load[d];
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                      cell_rhs(i) += load_tensor * fe_face_values[u].value(i, q)
-                                     * fe_face_values.JxW(q);
+                      cell_rhs(i) += load_tensor *
+                                     fe_face_values[u].value(i, q) *
+                                     fe_face_values.JxW(q);
                   }
               }
-          if (has_load)
+
+          // A cell with a prescribed (inhomogeneous) increment moves the
+          // known values to the right-hand side, which needs its matrix;
+          // other cells do not.
+          cell->get_dof_indices(dof_indices);
+          bool inhomogeneous = false;
+          for (const auto dof : dof_indices)
+            inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
+          if (inhomogeneous)
             {
-              cell->get_dof_indices(dof_indices);
+              elastic_cell_matrix(fe_values, material.stiffness(), cell_matrix);
               constraints.distribute_local_to_global(cell_rhs,
                                                      dof_indices,
-                                                     load_vector);
+                                                     rhs,
+                                                     cell_matrix);
             }
+          else
+            constraints.distribute_local_to_global(cell_rhs, dof_indices, rhs);
         }
-    load_vector.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
   }
 
 

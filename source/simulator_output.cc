@@ -46,7 +46,7 @@ namespace VPContact
   {
     const unsigned int n_ranks
       = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    pcout << "vpcontact: " << dim << "D quasistatic linear elasticity ("
+    pcout << "vpcontact: " << dim << "D quasistatic viscoplastic body ("
           << (dim == 3 ? "3D" :
               material.plane_hypothesis()
                   == ElasticMaterial<dim>::PlaneHypothesis::plane_stress ?
@@ -54,6 +54,8 @@ namespace VPContact
                          "plane strain")
           << "), E = " << material.youngs_modulus()
           << ", nu = " << material.poisson_ratio() << '\n'
+          << "  viscoplastic law: " << viscoplastic_law->description() << '\n'
+          << "  initial state: " << initial_conditions.description() << '\n'
           << "  boundary: " << boundary_conditions.summary() << '\n'
           << "  contact: "
           << (boundary_conditions.has_contact_boundary() ?
@@ -70,48 +72,6 @@ namespace VPContact
       pcout << "  running on " << n_ranks << " MPI rank(s); output in "
             << output_writer.directory() << "/\n";
     pcout << std::endl;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::compute_cell_stresses(
-    Vector<double>              &von_mises,
-    std::vector<Vector<double>> &components) const
-  {
-    // The stress E eps(u_h) averaged over each cell: the L2 projection onto
-    // piecewise constants, i.e. the paper's stress space Q^h.
-    const QGauss<dim>                    quadrature(fe.degree + 1);
-    FEValues<dim>                        fe_values(fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector     u(0);
-    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
-
-    von_mises.reinit(triangulation.n_active_cells());
-    components.assign(SymmetricTensor<2, dim>::n_independent_components,
-                      Vector<double>(triangulation.n_active_cells()));
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          fe_values[u].get_function_symmetric_gradients(displacement, strains);
-          SymmetricTensor<2, dim> average;
-          double                  volume = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              average += material.stress(strains[q]) * fe_values.JxW(q);
-              volume += fe_values.JxW(q);
-            }
-          average /= volume;
-          const unsigned int index = cell->active_cell_index();
-          von_mises(index)         = von_mises_norm(average);
-          for (unsigned int c = 0; c < components.size(); ++c)
-            components[c](index)
-              = average[SymmetricTensor<2, dim>::unrolled_to_component_indices(
-                c)];
-        }
   }
 
 
@@ -157,11 +117,14 @@ namespace VPContact
     statistics.add_value("wall_time", step_wall_time);
     statistics.add_value("u_max", u_max);
     statistics.add_value("von_mises_max", von_mises_max);
+    const double energy = elastic_energy();
+    statistics.add_value("elastic_energy", energy);
 
     std::string line = "step " + std::to_string(n)
                        + "  t = " + format("%.6g", time)
                        + "  |u|max = " + format("%.6e", u_max)
-                       + "  von Mises max = " + format("%.6e", von_mises_max);
+                       + "  von Mises max = " + format("%.6e", von_mises_max) +
+                       "  energy = " + format("%.6e", energy);
     if (verification.is_active())
       {
         const auto errors
@@ -173,6 +136,18 @@ namespace VPContact
         // tolerance.
         line += "  error: nodal max = " + format("%.2e", errors.max_nodal)
                 + ", L2 = " + format("%.2e", errors.l2);
+      }
+    if (verification.has_exact_stress())
+      {
+        const double error = stress_error(time);
+        // The scale of the stress for the relative error in the summary.
+        double stress_scale = 0;
+        for (const auto &c : components)
+          stress_scale = std::max(stress_scale, c.linfty_norm());
+        verification.record_stress_error(
+          error, Utilities::MPI::max(stress_scale, mpi_communicator));
+        statistics.add_value("stress_error_max", error);
+        line += "  stress error = " + format("%.2e", error);
       }
     if (!output_writer.deterministic_screen_output() && n > 0)
       line += "  CG its = " + std::to_string(last_linear_iterations)
@@ -227,9 +202,8 @@ namespace VPContact
   void
   Simulator<dim>::print_summary() const
   {
-    if (verification.is_active())
-      pcout << '\n' << verification.summary();
-    pcout << "\nRun complete: " << time_discretization.n_steps()
+    pcout << '\n' << verification.summary();
+    pcout << "Run complete: " << time_discretization.n_steps()
           << " steps; statistics in "
           << "statistics.csv";
     if (!output_writer.deterministic_screen_output())

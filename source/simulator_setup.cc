@@ -37,11 +37,10 @@ namespace VPContact
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    boundary_conditions.make_constraints(dof_handler, constraints);
-    constraints.close();
+    // The constraints at t = 0 have the structure of those of every step
+    // (only inhomogeneities of prescribed displacements change), so the
+    // matrix built with them serves the whole run.
+    make_constraints(0., nullptr);
 
     // The sparsity pattern of step-40: built on the locally relevant rows,
     // then the entries of rows owned by other ranks are sent to them.
@@ -56,11 +55,47 @@ namespace VPContact
                             dsp,
                             mpi_communicator);
 
-    load_vector.reinit(locally_owned_dofs, mpi_communicator);
+    rhs.reinit(locally_owned_dofs, mpi_communicator);
     displacement_owned.reinit(locally_owned_dofs, mpi_communicator);
     displacement.reinit(locally_owned_dofs,
                         locally_relevant_dofs,
                         mpi_communicator);
+    increment_owned.reinit(locally_owned_dofs, mpi_communicator);
+    increment.reinit(locally_owned_dofs,
+                     locally_relevant_dofs,
+                     mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_constraints(const double                         time,
+                                   const TrilinosWrappers::MPI::Vector *previous)
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    boundary_conditions.make_constraints(dof_handler,
+                                         constraints,
+                                         time,
+                                         previous);
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_stress_history()
+  {
+    // sigma_0 = 0 at every quadrature point of every locally owned cell;
+    // compute_initial_state() replaces it where the scene asks for elastic
+    // equilibrium.
+    stress_history.clear();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        stress_history.initialize(cell, quadrature.size());
   }
 
 

@@ -24,6 +24,14 @@ namespace VPContact
                         "one expression per component separated by ';', in "
                         "x, y (z) and t. Its nodal and L2 errors are then "
                         "printed and written to statistics.csv.");
+      prm.declare_entry("Exact stress",
+                        "",
+                        Patterns::Anything(),
+                        "If not empty: the exact stress sigma(x, t) [Pa], its "
+                        "independent components separated by ';' in the "
+                        "order xx; yy; xy (3D: xx; yy; zz; xy; xz; yz). The "
+                        "largest error over the quadrature points is then "
+                        "printed and written to statistics.csv.");
       prm.declare_entry("Function constants",
                         "",
                         Patterns::Map(Patterns::Anything(), Patterns::Double()),
@@ -57,6 +65,24 @@ namespace VPContact
       }
     else
       exact_displacement.reset();
+    if (!prm.get("Exact stress").empty())
+      {
+        std::map<std::string, double> constants;
+        for (const std::string &pair :
+             Utilities::split_string_list(prm.get("Function constants")))
+          {
+            const auto key_value = Utilities::split_string_list(pair, ':');
+            constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
+          }
+        exact_stress_function = parse_function_entry<dim>(
+          prm,
+          "Verification",
+          "Exact stress",
+          SymmetricTensor<2, dim>::n_independent_components,
+          constants);
+      }
+    else
+      exact_stress_function.reset();
     prm.leave_subsection();
   }
 
@@ -67,6 +93,41 @@ namespace VPContact
   Verification<dim>::is_active() const
   {
     return exact_displacement != nullptr;
+  }
+
+
+
+  template <int dim>
+  bool
+  Verification<dim>::has_exact_stress() const
+  {
+    return exact_stress_function != nullptr;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Verification<dim>::exact_stress(const Point<dim> &point,
+                                  const double      time) const
+  {
+    exact_stress_function->set_time(time);
+    SymmetricTensor<2, dim> sigma;
+    for (unsigned int c = 0; c < SymmetricTensor<2, dim>::n_independent_components;
+         ++c)
+      sigma.access_raw_entry(c) = exact_stress_function->value(point, c);
+    return sigma;
+  }
+
+
+
+  template <int dim>
+  void
+  Verification<dim>::record_stress_error(const double error,
+                                         const double stress_scale)
+  {
+    max_stress_error = std::max(max_stress_error, error);
+    max_stress       = std::max(max_stress, stress_scale);
   }
 
 
@@ -113,18 +174,28 @@ namespace VPContact
   std::string
   Verification<dim>::summary() const
   {
-    const double relative
-      = (max_displacement > 0 ? max_nodal_error / max_displacement :
-                                max_nodal_error);
-    char buffer[160];
-    std::snprintf(buffer,
-                  sizeof(buffer),
-                  "Verification: largest nodal error / largest |u| = %.1e "
-                  "(round-off, below %.0e: %s)",
-                  relative,
-                  round_off_level,
-                  relative < round_off_level ? "yes" : "NO");
-    return buffer;
+    const auto line = [](const char  *what,
+                         const double error,
+                         const double scale) {
+      const double relative = (scale > 0 ? error / scale : error);
+      char         buffer[200];
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "Verification: largest %s error / largest %s = %.1e "
+                    "(round-off, below %.0e: %s)\n",
+                    what,
+                    what,
+                    relative,
+                    round_off_level,
+                    relative < round_off_level ? "yes" : "NO");
+      return std::string(buffer);
+    };
+    std::string text;
+    if (is_active())
+      text += line("nodal displacement", max_nodal_error, max_displacement);
+    if (has_exact_stress())
+      text += line("stress", max_stress_error, max_stress);
+    return text;
   }
 
 

@@ -8,6 +8,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <map>
 #include <memory>
@@ -25,6 +26,9 @@ namespace VPContact
    * - clamped (Gamma_D): u = 0;
    * - rollers: the listed displacement components vanish, the others are
    *   traction free (a symmetry plane, or the supports of a tension test);
+   * - prescribed displacement: the listed components follow the function
+   *   "Prescribed displacement" g(x, t), the others are traction free
+   *   (displacement-controlled loading);
    * - traction (Gamma_N): sigma nu = f_N(x, t);
    * - contact (Gamma_C): bilateral contact u . nu = 0 with the constraint
    *   built for any boundary shape by
@@ -50,13 +54,23 @@ namespace VPContact
     check_against_mesh(const std::set<types::boundary_id> &mesh_ids) const;
 
     /**
-     * Add the homogeneous constraints of the clamped, roller and contact parts
-     * to @p constraints (which must already hold the hanging node
-     * constraints).
+     * Add the constraints of the clamped, roller, prescribed and contact
+     * parts to @p constraints (which must already hold the hanging node
+     * constraints). The unknown of a time step is the displacement increment
+     * u_n - u_{n-1}: on the prescribed part it is g(x, @p time) minus the
+     * nodal values of @p previous_displacement (a ghosted vector; nullptr
+     * stands for zero); all other constraints are homogeneous.
      */
     void
-    make_constraints(const DoFHandler<dim>     &dof_handler,
-                     AffineConstraints<double> &constraints) const;
+    make_constraints(
+      const DoFHandler<dim>                &dof_handler,
+      AffineConstraints<double>            &constraints,
+      const double                          time,
+      const TrilinosWrappers::MPI::Vector *previous_displacement) const;
+
+    /// Whether the constraints change with time (prescribed displacements).
+    bool
+    has_prescribed_displacement() const;
 
     bool
     is_traction_boundary(const types::boundary_id id) const;
@@ -90,6 +104,9 @@ namespace VPContact
     std::set<types::boundary_id>                clamped_ids;
     std::map<types::boundary_id, ComponentMask> roller_ids;
     std::map<types::boundary_id, std::string>   roller_text;
+    std::map<types::boundary_id, ComponentMask> prescribed_ids;
+    std::map<types::boundary_id, std::string>   prescribed_text;
+    std::unique_ptr<FunctionParser<dim>>        prescribed_function;
     std::set<types::boundary_id>                traction_ids;
     std::set<types::boundary_id>                contact_ids;
     std::unique_ptr<FunctionParser<dim>>        traction_function;

@@ -6,16 +6,20 @@
 #include <vpcontact/boundary_conditions.h>
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/geometry.h>
+#include <vpcontact/initial_conditions.h>
 #include <vpcontact/linear_solver.h>
 #include <vpcontact/output_writer.h>
+#include <vpcontact/quadrature_history.h>
 #include <vpcontact/statistics.h>
 #include <vpcontact/time_discretization.h>
 #include <vpcontact/tresca_friction.h>
 #include <vpcontact/verification.h>
+#include <vpcontact/viscoplastic_law.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -32,18 +36,24 @@ namespace VPContact
 
   /**
    * The quasistatic problem on a distributed mesh, in the manner of deal.II's
-   * step-40 and step-42.
+   * step-40 and step-42, discretised by the paper's scheme (14).
    *
    * The implementation is split by concern:
-   * - simulator.cc: parameters, construction, the time loop;
-   * - simulator_setup.cc: mesh, degrees of freedom, constraints, sparsity;
-   * - simulator_assembly.cc: the stiffness matrix and the load vector;
-   * - simulator_output.cc: stresses, statistics, screen and field output.
+   * - simulator.cc: parameters, construction, the time loop, one step;
+   * - simulator_setup.cc: mesh, degrees of freedom, constraints, sparsity,
+   *   quadrature point storage;
+   * - simulator_assembly.cc: the stiffness matrix (once per mesh) and the
+   *   right-hand side of a step;
+   * - simulator_stress.cc: the stress update and its safeguards;
+   * - simulator_output.cc: statistics, screen and field output.
    *
-   * The unknown is the displacement, Q1 in every component of one FESystem.
-   * The physics of this release is linear elasticity: at every t_n the
-   * displacement u_n solves (E eps(u_n), eps(v)) = (f_n, v) with the
-   * boundary parts of BoundaryConditions.
+   * The unknowns are the displacement, Q1 in every component of one
+   * FESystem, and the stress at the quadrature points of the assembly rule.
+   * A step solves for the increment du = u_n - u_{n-1} = k w (the paper's
+   * velocity problem multiplied by k, so the matrix is E and does not depend
+   * on k):
+   *   (E eps(du), eps(v)) = (f_n, v) - (sigma_{n-1} + k G_{n-1}, eps(v)),
+   * then sets sigma_n = sigma_{n-1} + k G_{n-1} + E eps(du).
    */
   template <int dim>
   class Simulator
@@ -66,30 +76,49 @@ namespace VPContact
     run();
 
   private:
+    // simulator.cc
+    void
+    check_stability_limits() const;
+    void
+    compute_initial_state();
+    void
+    solve_step(const unsigned int n);
+    void
+    solve_increment(const double time, const bool with_viscoplastic_rate);
+
     // simulator_setup.cc
     void
     make_mesh();
     void
     setup_dofs();
+    void
+    make_constraints(const double                          time,
+                     const TrilinosWrappers::MPI::Vector *previous);
+    void
+    setup_stress_history();
 
     // simulator_assembly.cc
     void
     assemble_stiffness_matrix();
     void
-    assemble_load_vector(const double time);
+    assemble_rhs(const double time, const bool with_viscoplastic_rate);
 
-    // simulator.cc
+    // simulator_stress.cc
     void
-    solve_step(const unsigned int n);
+    update_stress(const unsigned int n);
+    void
+    compute_cell_stresses(Vector<double>              &von_mises,
+                          std::vector<Vector<double>> &components) const;
+    double
+    elastic_energy() const;
+    double
+    stress_error(const double time) const;
 
     // simulator_output.cc
     void
     print_header() const;
     void
     postprocess_step(const unsigned int n, const double step_wall_time);
-    void
-    compute_cell_stresses(Vector<double>              &von_mises,
-                          std::vector<Vector<double>> &components) const;
     void
     write_fields(const unsigned int                 n,
                  const Vector<double>              &von_mises,
@@ -102,28 +131,38 @@ namespace VPContact
     mutable TimerOutput computing_timer;
 
     // The physics modules, each owning its section of the parameter file.
-    Geometry<dim>           geometry;
-    ElasticMaterial<dim>    material;
-    BoundaryConditions<dim> boundary_conditions;
-    TrescaFriction<dim>     friction;
-    TimeDiscretization      time_discretization;
-    LinearSolver            linear_solver;
-    OutputWriter<dim>       output_writer;
-    Verification<dim>       verification;
+    Geometry<dim>                         geometry;
+    ElasticMaterial<dim>                  material;
+    ViscoplasticityParameters<dim>        viscoplasticity;
+    std::unique_ptr<ViscoplasticLaw<dim>> viscoplastic_law;
+    BoundaryConditions<dim>               boundary_conditions;
+    TrescaFriction<dim>                   friction;
+    InitialConditions                     initial_conditions;
+    TimeDiscretization                    time_discretization;
+    LinearSolver                          linear_solver;
+    OutputWriter<dim>                     output_writer;
+    Verification<dim>                     verification;
 
     parallel::distributed::Triangulation<dim> triangulation;
     const FESystem<dim>                       fe;
+    /// The rule of assembly, stress storage and stress output alike.
+    const QGauss<dim>                         quadrature;
     DoFHandler<dim>                           dof_handler;
     IndexSet                                  locally_owned_dofs;
     IndexSet                                  locally_relevant_dofs;
+    /// Constraints on the increment du of the current step.
     AffineConstraints<double>                 constraints;
 
     TrilinosWrappers::SparseMatrix stiffness_matrix;
-    TrilinosWrappers::MPI::Vector  load_vector;
-    /// u_n on the locally owned dofs (the solver's vector).
+    TrilinosWrappers::MPI::Vector  rhs;
+    /// u_n: owned part and ghosted copy for evaluation and output.
     TrilinosWrappers::MPI::Vector displacement_owned;
-    /// u_n with ghost entries, for evaluation and output.
     TrilinosWrappers::MPI::Vector displacement;
+    /// du = u_n - u_{n-1}: owned part (the solver's vector), ghosted copy.
+    TrilinosWrappers::MPI::Vector increment_owned;
+    TrilinosWrappers::MPI::Vector increment;
+
+    StressHistory<dim> stress_history;
 
     Statistics   statistics;
     unsigned int last_linear_iterations = 0;

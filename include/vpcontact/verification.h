@@ -5,6 +5,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -18,7 +19,8 @@ namespace VPContact
    * Section "Verification". When "Exact displacement" is given, every step
    * reports the largest nodal error max_i |u_h(x_i) - u(x_i)| and the L2
    * error ||u_h - u||, which are round-off for a solution in the finite
-   * element space.
+   * element space. When "Exact stress" is given, every step reports the
+   * largest error of the quadrature point stress.
    */
   template <int dim>
   class Verification
@@ -36,8 +38,21 @@ namespace VPContact
     void
     parse_parameters(ParameterHandler &prm);
 
+    /// Whether an exact displacement is given.
     bool
     is_active() const;
+
+    /// Whether an exact stress is given.
+    bool
+    has_exact_stress() const;
+
+    /// The exact stress at @p point and @p time.
+    SymmetricTensor<2, dim>
+    exact_stress(const Point<dim> &point, const double time) const;
+
+    /// Keep the largest stress error of the run for summary().
+    void
+    record_stress_error(const double error, const double stress_scale);
 
     /**
      * The errors of the ghosted displacement @p solution at @p time, whose
@@ -66,6 +81,9 @@ namespace VPContact
     double max_displacement = 0;
 
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
+    std::unique_ptr<FunctionParser<dim>> exact_stress_function;
+    double                               max_stress_error = 0;
+    double                               max_stress       = 0;
   };
 } // namespace VPContact
 

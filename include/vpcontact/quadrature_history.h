@@ -1,0 +1,37 @@
+// The state stored at every quadrature point: the stress history of the
+// paper's scheme, which lives in a piecewise discontinuous space.
+#ifndef vpcontact_quadrature_history_h
+#define vpcontact_quadrature_history_h
+
+#include <deal.II/base/quadrature_point_data.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/grid/tria.h>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * What the scheme keeps at one quadrature point between steps (as
+   * step-18's PointHistory). The stress sigma_n is the paper's discrete
+   * stress; the predictor sigma_{n-1} + k G_{n-1} is computed once per step
+   * during the assembly of the right-hand side and reused by the stress
+   * update, so that G is evaluated once per point and step.
+   */
+  template <int dim>
+  struct QuadraturePointHistory
+  {
+    SymmetricTensor<2, dim> stress;
+    SymmetricTensor<2, dim> predictor;
+  };
+
+  /// The per-cell storage of QuadraturePointHistory (deal.II's
+  /// CellDataStorage, on the locally owned cells).
+  template <int dim>
+  using StressHistory =
+    CellDataStorage<typename Triangulation<dim>::cell_iterator,
+                    QuadraturePointHistory<dim>>;
+} // namespace VPContact
+
+#endif

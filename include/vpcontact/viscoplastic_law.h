@@ -1,0 +1,171 @@
+// The viscoplastic function G(sigma, eps(u), zeta) of the constitutive law
+// (1): a small class per law, chosen by name in the section "Viscoplasticity".
+#ifndef vpcontact_viscoplastic_law_h
+#define vpcontact_viscoplastic_law_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <limits>
+#include <memory>
+#include <string>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * The truncation Phi_L of the paper's (19): every component of @p tau
+   * clipped to [-L, L].
+   */
+  template <int dim>
+  SymmetricTensor<2, dim>
+  truncate(const SymmetricTensor<2, dim> &tau, const double L);
+
+  /**
+   * A viscoplastic law: the rate G(sigma, eps, zeta) that the forward Euler
+   * step adds to the stress, sigma_n = sigma_{n-1} + k E eps(w) + k G_{n-1}.
+   * No finite element types here: a law is a function of tensors.
+   */
+  template <int dim>
+  class ViscoplasticLaw
+  {
+  public:
+    virtual ~ViscoplasticLaw() = default;
+
+    /// G(sigma, eps, zeta) [Pa/s].
+    virtual SymmetricTensor<2, dim>
+    rate(const SymmetricTensor<2, dim> &stress,
+         const SymmetricTensor<2, dim> &strain,
+         const double                   damage) const = 0;
+
+    /**
+     * The largest time step for which the explicit step is stable, where
+     * the law knows it (for G = -sigma/eta the amplification factor of one
+     * step is 1 - k/eta, so k <= 2 eta); infinity where no limit is known.
+     */
+    virtual double
+    explicit_step_limit() const;
+
+    /// Whether G is identically zero (then no viscoplastic work is done).
+    virtual bool
+    is_zero() const;
+
+    /// A description for the screen, e.g. "Maxwell -sigma/eta, eta = 0.1".
+    virtual std::string
+    description() const = 0;
+  };
+
+
+
+  /// G = 0: linear elasticity.
+  template <int dim>
+  class NoViscoplasticity : public ViscoplasticLaw<dim>
+  {
+  public:
+    SymmetricTensor<2, dim>
+    rate(const SymmetricTensor<2, dim> &stress,
+         const SymmetricTensor<2, dim> &strain,
+         const double                   damage) const override;
+
+    bool
+    is_zero() const override;
+
+    std::string
+    description() const override;
+  };
+
+
+
+  /**
+   * The paper's law (18): G = -(1 - zeta) Phi_L(sigma). It relaxes the
+   * stress only where the material is damaged (zeta < 1); its Lipschitz
+   * constant in sigma is (1 - zeta) <= 1, so k <= 2 [s] is stable.
+   */
+  template <int dim>
+  class DamageTruncatedLaw : public ViscoplasticLaw<dim>
+  {
+  public:
+    explicit DamageTruncatedLaw(const double truncation);
+
+    SymmetricTensor<2, dim>
+    rate(const SymmetricTensor<2, dim> &stress,
+         const SymmetricTensor<2, dim> &strain,
+         const double                   damage) const override;
+
+    double
+    explicit_step_limit() const override;
+
+    std::string
+    description() const override;
+
+  private:
+    const double L;
+  };
+
+
+
+  /**
+   * Linear Maxwell relaxation G = -sigma/eta, or, with a truncation L, the
+   * Lipschitz-bounded -Phi_L(sigma)/eta. Lipschitz constant 1/eta.
+   */
+  template <int dim>
+  class MaxwellLaw : public ViscoplasticLaw<dim>
+  {
+  public:
+    /// @p truncation = infinity: no truncation.
+    MaxwellLaw(const double relaxation_time, const double truncation);
+
+    SymmetricTensor<2, dim>
+    rate(const SymmetricTensor<2, dim> &stress,
+         const SymmetricTensor<2, dim> &strain,
+         const double                   damage) const override;
+
+    double
+    explicit_step_limit() const override;
+
+    std::string
+    description() const override;
+
+  private:
+    const double eta;
+    const double L;
+  };
+
+
+
+  /**
+   * Section "Viscoplasticity": which law, and its parameters. Adding a law
+   * means adding a class above and one branch to create_law().
+   */
+  template <int dim>
+  class ViscoplasticityParameters
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    std::unique_ptr<ViscoplasticLaw<dim>>
+    create_law() const;
+
+    /**
+     * A run stops when some stress component exceeds this multiple of
+     * Young's modulus: a strain of that size means the explicit step has
+     * blown up, not that the body deforms.
+     */
+    double
+    divergence_limit() const;
+
+  private:
+    double      divergence_factor = 1e6;
+    std::string law_name         = "none";
+    double      truncation       = 1000;
+    double      relaxation_time  = 1;
+    bool        truncate_maxwell = false;
+  };
+} // namespace VPContact
+
+#endif

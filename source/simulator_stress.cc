@@ -1,0 +1,163 @@
+// The simulator's stress: the update sigma_n = sigma_{n-1} + k G_{n-1} +
+// E eps(du) at every quadrature point, its safeguards, and the quantities
+// derived from it for output.
+#include <vpcontact/input_error.h>
+#include <vpcontact/simulator.h>
+#include <vpcontact/stress_measures.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <cmath>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  Simulator<dim>::update_stress(const unsigned int n)
+  {
+    TimerOutput::Scope t(computing_timer, "Stress update");
+
+    FEValues<dim>                        fe_values(fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector     u(0);
+    std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
+
+    // The largest stress component, to catch an explicit step that has
+    // blown up; NaN compares false and is turned into infinity.
+    double largest = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[u].get_function_symmetric_gradients(increment,
+                                                        strain_increments);
+          const auto history = stress_history.get_data(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              auto &point  = *history[q];
+              point.stress = point.predictor +
+                             material.stress(strain_increments[q]);
+              for (unsigned int c = 0;
+                   c < SymmetricTensor<2, dim>::n_independent_components;
+                   ++c)
+                {
+                  const double value = std::abs(point.stress.access_raw_entry(c));
+                  largest = (value >= largest ? value :
+                             std::isnan(value) ?
+                                                std::numeric_limits<double>::infinity() :
+                                                largest);
+                }
+            }
+        }
+    largest = Utilities::MPI::max(largest, mpi_communicator);
+
+    const double limit =
+      viscoplasticity.divergence_limit() * material.youngs_modulus();
+    AssertThrow(
+      std::isfinite(largest) && largest <= limit,
+      ExcMessage(
+        "Step " + std::to_string(n) + " (t = " +
+        to_text(time_discretization.time(n)) + "): the stress " +
+        (std::isfinite(largest) ?
+           "reached " + to_text(largest) + " Pa, more than " +
+             "Viscoplasticity/Divergence limit x E = " + to_text(limit) +
+             " Pa" :
+           "is not finite (NaN or Inf)") +
+        ". The explicit viscoplastic step (law: " +
+        viscoplastic_law->description() +
+        ") is probably unstable: reduce Time/Time step = " +
+        to_text(time_discretization.step_size()) +
+        ", or check the loads. The output up to step " +
+        std::to_string(n == 0 ? 0 : n - 1) + " is complete in " +
+        output_writer.directory() + "."));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_cell_stresses(
+    Vector<double>              &von_mises,
+    std::vector<Vector<double>> &components) const
+  {
+    // The cell average of the quadrature point stress: its L2 projection on
+    // piecewise constants, the paper's P_Q (exact for the stress of a
+    // parallelogram cell, which is constant).
+    FEValues<dim> fe_values(fe, quadrature, update_JxW_values);
+    von_mises.reinit(triangulation.n_active_cells());
+    components.assign(SymmetricTensor<2, dim>::n_independent_components,
+                      Vector<double>(triangulation.n_active_cells()));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          const auto              history = stress_history.get_data(cell);
+          SymmetricTensor<2, dim> average;
+          double                  volume = 0;
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              average += history[q]->stress * fe_values.JxW(q);
+              volume += fe_values.JxW(q);
+            }
+          average /= volume;
+          const unsigned int index = cell->active_cell_index();
+          von_mises(index)         = von_mises_norm(average);
+          for (unsigned int c = 0; c < components.size(); ++c)
+            components[c](index) = average.access_raw_entry(c);
+        }
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::elastic_energy() const
+  {
+    // 1/2 (E^{-1} sigma, sigma): the energy stored in the stress. For an
+    // elastic body it equals 1/2 (E eps(u), eps(u)); viscous relaxation
+    // lowers it.
+    const SymmetricTensor<4, dim> compliance = invert(material.stiffness());
+    FEValues<dim> fe_values(fe, quadrature, update_JxW_values);
+    double        energy = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          const auto history = stress_history.get_data(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            energy += 0.5 * (compliance * history[q]->stress) *
+                      history[q]->stress * fe_values.JxW(q);
+        }
+    return Utilities::MPI::sum(energy, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::stress_error(const double time) const
+  {
+    // max over quadrature points of |sigma_h - sigma| (Frobenius norm).
+    FEValues<dim> fe_values(fe, quadrature, update_quadrature_points);
+    double        error = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          const auto history = stress_history.get_data(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            error = std::max(error,
+                             (history[q]->stress -
+                              verification.exact_stress(
+                                fe_values.quadrature_point(q), time))
+                               .norm());
+        }
+    return Utilities::MPI::max(error, mpi_communicator);
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace VPContact
