@@ -125,16 +125,16 @@ namespace VPContact
              Utilities::split_string_list(prm.get(entry)))
           {
             const auto key_value = Utilities::split_string_list(pair, ':');
-            const types::boundary_id id =
-              Utilities::string_to_int(key_value[0]);
+            const types::boundary_id id
+              = Utilities::string_to_int(key_value[0]);
             std::vector<bool> mask(dim, false);
             for (const char c : key_value[1])
               mask[c - 'x'] = true;
             VPContactCheckParameter(ids.emplace(id, ComponentMask(mask)).second,
                                     section + "/" + entry,
                                     prm.get(entry),
-                                    "boundary id " + std::to_string(id) +
-                                      " is listed twice.");
+                                    "boundary id " + std::to_string(id)
+                                      + " is listed twice.");
             text[id] = key_value[1];
           }
       };
@@ -178,9 +178,12 @@ namespace VPContact
       = parse_function_entry<dim>(prm, section, "Traction", dim, constants);
     body_force_function
       = parse_function_entry<dim>(prm, section, "Body force", dim, constants);
-    body_force_is_zero = (prm.get("Body force") == zero_expression(dim));
-    prescribed_function = parse_function_entry<dim>(
-      prm, section, "Prescribed displacement", dim, constants);
+    body_force_is_zero  = (prm.get("Body force") == zero_expression(dim));
+    prescribed_function = parse_function_entry<dim>(prm,
+                                                    section,
+                                                    "Prescribed displacement",
+                                                    dim,
+                                                    constants);
     prm.leave_subsection();
   }
 
@@ -217,9 +220,9 @@ namespace VPContact
   template <int dim>
   void
   BoundaryConditions<dim>::make_constraints(
-    const DoFHandler<dim>                &dof_handler,
-    AffineConstraints<double>            &constraints,
-    const double                          time,
+    const DoFHandler<dim>               &dof_handler,
+    AffineConstraints<double>           &constraints,
+    const double                         time,
     const TrilinosWrappers::MPI::Vector *previous_displacement) const
   {
     // Dirichlet parts first: interpolate_boundary_values leaves alone the
@@ -233,8 +236,11 @@ namespace VPContact
                                                zero,
                                                constraints);
     for (const auto &[id, mask] : roller_ids)
-      VectorTools::interpolate_boundary_values(
-        dof_handler, id, zero, constraints, mask);
+      VectorTools::interpolate_boundary_values(dof_handler,
+                                               id,
+                                               zero,
+                                               constraints,
+                                               mask);
 
     // Prescribed displacements: the increment of a step is g(t_n) minus the
     // current nodal value, so that u_n = g(t_n) holds exactly even if u_0
@@ -244,17 +250,21 @@ namespace VPContact
         prescribed_function->set_time(time);
         std::map<types::global_dof_index, double> values;
         for (const auto &[id, mask] : prescribed_ids)
-          VectorTools::interpolate_boundary_values(
-            dof_handler, id, *prescribed_function, values, mask);
+          VectorTools::interpolate_boundary_values(dof_handler,
+                                                   id,
+                                                   *prescribed_function,
+                                                   values,
+                                                   mask);
         for (const auto &[dof, value] : values)
-          if (constraints.can_store_line(dof) &&
-              !constraints.is_constrained(dof))
+          if (constraints.can_store_line(dof)
+              && !constraints.is_constrained(dof))
             {
               constraints.add_line(dof);
               constraints.set_inhomogeneity(
                 dof,
-                value - (previous_displacement ? (*previous_displacement)(dof) :
-                                                 0.));
+                value
+                  - (previous_displacement ? (*previous_displacement)(dof) :
+                                             0.));
             }
       }
 

@@ -3,7 +3,6 @@
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
-
 #include <sstream>
 #include <string>
 
@@ -20,7 +19,8 @@ namespace VPContact
       for (std::size_t i = 0; i < name.size(); ++i)
         if (name[i] == '_' && i + 2 < name.size())
           {
-            out += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
+            out += static_cast<char>(
+              std::stoi(name.substr(i + 1, 2), nullptr, 16));
             i += 2;
           }
         else
@@ -38,7 +38,8 @@ namespace VPContact
       std::string        word, line;
       while (words >> word)
         {
-          if (!line.empty() && indent.size() + 2 + line.size() + 1 + word.size() > 78)
+          if (!line.empty()
+              && indent.size() + 2 + line.size() + 1 + word.size() > 78)
             {
               out << indent << "# " << line << '\n';
               line.clear();
@@ -58,11 +59,13 @@ namespace VPContact
       for (const auto &[name, node] : tree)
         if (node.get_optional<std::string>("value"))
           {
-            print_comment(out, indent, node.get<std::string>("documentation", ""));
             print_comment(out,
                           indent,
-                          "Allowed: " +
-                            node.get<std::string>("pattern_description", ""));
+                          node.get<std::string>("documentation", ""));
+            print_comment(out,
+                          indent,
+                          "Allowed: "
+                            + node.get<std::string>("pattern_description", ""));
             out << indent << "set " << demangle(name) << " = "
                 << node.get<std::string>("default_value", "") << "\n\n";
           }

@@ -4,9 +4,7 @@
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/timer.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
 
 #include <cmath>
@@ -47,8 +45,8 @@ namespace VPContact
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(communicator,
                     typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement |
-                      Triangulation<dim>::smoothing_on_coarsening))
+                      Triangulation<dim>::smoothing_on_refinement
+                      | Triangulation<dim>::smoothing_on_coarsening))
     , fe(FE_Q<dim>(1), dim)
     , quadrature(2)
     , dof_handler(triangulation)
@@ -83,10 +81,12 @@ namespace VPContact
       "Time/Time step",
       k,
       "the explicit (forward Euler) viscoplastic step is unstable for this "
-      "law (" + viscoplastic_law->description() + ") when k > " +
-        to_text(limit) + " (2 / Lipschitz constant of G; for Maxwell 2 eta). "
-        "Choose Time step <= " + to_text(limit) +
-        ", or a slower law (larger Viscoplasticity/Relaxation time).");
+      "law ("
+        + viscoplastic_law->description() + ") when k > " + to_text(limit)
+        + " (2 / Lipschitz constant of G; for Maxwell 2 eta). "
+          "Choose Time step <= "
+        + to_text(limit)
+        + ", or a slower law (larger Viscoplasticity/Relaxation time).");
   }
 
 
@@ -167,16 +167,15 @@ namespace VPContact
       TimerOutput::Scope t(computing_timer, "Solve");
       // The previous increment is the start vector: in a slowly loaded
       // quasistatic run consecutive increments are alike.
-      last_linear_iterations =
-        linear_solver.solve(stiffness_matrix, increment_owned, rhs);
+      last_linear_iterations
+        = linear_solver.solve(stiffness_matrix, increment_owned, rhs);
       constraints.distribute(increment_owned);
     }
     AssertThrow(std::isfinite(increment_owned.l2_norm()),
-                ExcMessage("The displacement increment at t = " +
-                           to_text(time) +
-                           " is not finite. The output up to the previous "
-                           "step is complete in " +
-                           output_writer.directory() + "."));
+                ExcMessage("The displacement increment at t = " + to_text(time)
+                           + " is not finite. The output up to the previous "
+                             "step is complete in "
+                           + output_writer.directory() + "."));
     increment = increment_owned;
     displacement_owned += increment_owned;
     displacement = displacement_owned;

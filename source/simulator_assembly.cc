@@ -3,9 +3,7 @@
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -54,12 +52,11 @@ namespace VPContact
     // k, since the unknown is the increment k w. It does not change while
     // the mesh is fixed, and neither does the structure of the constraints,
     // so it is assembled once.
-    FEValues<dim> fe_values(fe,
+    FEValues<dim>      fe_values(fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double>                   cell_matrix(dofs_per_cell,
-                                   dofs_per_cell);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
 
     stiffness_matrix = 0.;
@@ -92,22 +89,21 @@ namespace VPContact
     // not zero, with the state of step n-1 (forward Euler).
     boundary_conditions.set_time(time);
     const double k = time_discretization.step_size();
-    const bool   evaluate_rate =
-      with_viscoplastic_rate && !viscoplastic_law->is_zero();
-    const QGauss<dim - 1> face_quadrature(fe.degree + 1);
-    FEValues<dim>         fe_values(fe,
+    const bool   evaluate_rate
+      = with_viscoplastic_rate && !viscoplastic_law->is_zero();
+    const QGauss<dim - 1>            face_quadrature(fe.degree + 1);
+    FEValues<dim>                    fe_values(fe,
                             quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>     fe_face_values(fe,
+                            update_values | update_gradients
+                              | update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim>                fe_face_values(fe,
                                      face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
-    const FEValuesExtractors::Vector     u(0);
-    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double>                       cell_rhs(dofs_per_cell);
-    FullMatrix<double>                   cell_matrix(dofs_per_cell,
-                                   dofs_per_cell);
+                                     update_values | update_quadrature_points
+                                       | update_JxW_values);
+    const FEValuesExtractors::Vector u(0);
+    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>                   cell_rhs(dofs_per_cell);
+    FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     Vector<double>                       load(dim);
@@ -128,39 +124,39 @@ namespace VPContact
               auto &point     = *history[q];
               point.predictor = point.stress;
               if (evaluate_rate)
-                point.predictor +=
-                  k * viscoplastic_law->rate(point.stress, strains[q], 1.);
+                point.predictor
+                  += k * viscoplastic_law->rate(point.stress, strains[q], 1.);
               Tensor<1, dim> body_force;
               if (boundary_conditions.has_body_force())
                 {
-                  boundary_conditions.body_force().vector_value(
-                    fe_values.quadrature_point(q), load);
+                  boundary_conditions.body_force()
+                    .vector_value(fe_values.quadrature_point(q), load);
                   for (unsigned int d = 0; d < dim; ++d)
                     body_force[d] = load[d];
                 }
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_rhs(i) +=
-                  (body_force * fe_values[u].value(i, q) -
-                   point.predictor * fe_values[u].symmetric_gradient(i, q)) *
-                  fe_values.JxW(q);
+                cell_rhs(i)
+                  += (body_force * fe_values[u].value(i, q)
+                      - point.predictor * fe_values[u].symmetric_gradient(i, q))
+                     * fe_values.JxW(q);
             }
 
           for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                boundary_conditions.is_traction_boundary(face->boundary_id()))
+            if (face->at_boundary()
+                && boundary_conditions.is_traction_boundary(
+                  face->boundary_id()))
               {
                 fe_face_values.reinit(cell, face);
                 for (const unsigned int q :
                      fe_face_values.quadrature_point_indices())
                   {
-                    boundary_conditions.traction().vector_value(
-                      fe_face_values.quadrature_point(q), load);
+                    boundary_conditions.traction()
+                      .vector_value(fe_face_values.quadrature_point(q), load);
                     for (unsigned int d = 0; d < dim; ++d)
                       load_tensor[d] = load[d];
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                      cell_rhs(i) += load_tensor *
-                                     fe_face_values[u].value(i, q) *
-                                     fe_face_values.JxW(q);
+                      cell_rhs(i) += load_tensor * fe_face_values[u].value(i, q)
+                                     * fe_face_values.JxW(q);
                   }
               }
 

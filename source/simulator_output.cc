@@ -112,8 +112,7 @@ namespace VPContact
                            triangulation.n_global_active_cells()));
     statistics.add_value("dofs",
                          static_cast<unsigned long long>(dof_handler.n_dofs()));
-    statistics.add_value("linear_iterations",
-                         n == 0 ? 0u : last_linear_iterations);
+    statistics.add_value("linear_iterations", last_linear_iterations);
     statistics.add_value("wall_time", step_wall_time);
     statistics.add_value("u_max", u_max);
     statistics.add_value("von_mises_max", von_mises_max);
@@ -123,8 +122,8 @@ namespace VPContact
     std::string line = "step " + std::to_string(n)
                        + "  t = " + format("%.6g", time)
                        + "  |u|max = " + format("%.6e", u_max)
-                       + "  von Mises max = " + format("%.6e", von_mises_max) +
-                       "  energy = " + format("%.6e", energy);
+                       + "  von Mises max = " + format("%.6e", von_mises_max)
+                       + "  energy = " + format("%.6e", energy);
     if (verification.is_active())
       {
         const auto errors
@@ -144,8 +143,9 @@ namespace VPContact
         double stress_scale = 0;
         for (const auto &c : components)
           stress_scale = std::max(stress_scale, c.linfty_norm());
-        verification.record_stress_error(
-          error, Utilities::MPI::max(stress_scale, mpi_communicator));
+        verification.record_stress_error(error,
+                                         Utilities::MPI::max(stress_scale,
+                                                             mpi_communicator));
         statistics.add_value("stress_error_max", error);
         line += "  stress error = " + format("%.2e", error);
       }

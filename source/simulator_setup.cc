@@ -70,8 +70,9 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::make_constraints(const double                         time,
-                                   const TrilinosWrappers::MPI::Vector *previous)
+  Simulator<dim>::make_constraints(
+    const double                         time,
+    const TrilinosWrappers::MPI::Vector *previous)
   {
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);

@@ -35,42 +35,43 @@ namespace VPContact
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
-              auto &point  = *history[q];
-              point.stress = point.predictor +
-                             material.stress(strain_increments[q]);
+              auto &point = *history[q];
+              point.stress
+                = point.predictor + material.stress(strain_increments[q]);
               for (unsigned int c = 0;
                    c < SymmetricTensor<2, dim>::n_independent_components;
                    ++c)
                 {
-                  const double value = std::abs(point.stress.access_raw_entry(c));
-                  largest = (value >= largest ? value :
+                  const double value
+                    = std::abs(point.stress.access_raw_entry(c));
+                  largest = (value >= largest ?
+                               value :
                              std::isnan(value) ?
-                                                std::numeric_limits<double>::infinity() :
-                                                largest);
+                               std::numeric_limits<double>::infinity() :
+                               largest);
                 }
             }
         }
     largest = Utilities::MPI::max(largest, mpi_communicator);
 
-    const double limit =
-      viscoplasticity.divergence_limit() * material.youngs_modulus();
-    AssertThrow(
-      std::isfinite(largest) && largest <= limit,
-      ExcMessage(
-        "Step " + std::to_string(n) + " (t = " +
-        to_text(time_discretization.time(n)) + "): the stress " +
-        (std::isfinite(largest) ?
-           "reached " + to_text(largest) + " Pa, more than " +
-             "Viscoplasticity/Divergence limit x E = " + to_text(limit) +
-             " Pa" :
-           "is not finite (NaN or Inf)") +
-        ". The explicit viscoplastic step (law: " +
-        viscoplastic_law->description() +
-        ") is probably unstable: reduce Time/Time step = " +
-        to_text(time_discretization.step_size()) +
-        ", or check the loads. The output up to step " +
-        std::to_string(n == 0 ? 0 : n - 1) + " is complete in " +
-        output_writer.directory() + "."));
+    const double limit
+      = viscoplasticity.divergence_limit() * material.youngs_modulus();
+    AssertThrow(std::isfinite(largest) && largest <= limit,
+                ExcMessage(
+                  "Step " + std::to_string(n) + " (t = "
+                  + to_text(time_discretization.time(n)) + "): the stress "
+                  + (std::isfinite(largest) ?
+                       "reached " + to_text(largest) + " Pa, more than "
+                         + "Viscoplasticity/Divergence limit x E = "
+                         + to_text(limit) + " Pa" :
+                       "is not finite (NaN or Inf)")
+                  + ". The explicit viscoplastic step (law: "
+                  + viscoplastic_law->description()
+                  + ") is probably unstable: reduce Time/Time step = "
+                  + to_text(time_discretization.step_size())
+                  + ", or check the loads. The output up to step "
+                  + std::to_string(n == 0 ? 0 : n - 1) + " is complete in "
+                  + output_writer.directory() + "."));
   }
 
 
@@ -118,16 +119,16 @@ namespace VPContact
     // elastic body it equals 1/2 (E eps(u), eps(u)); viscous relaxation
     // lowers it.
     const SymmetricTensor<4, dim> compliance = invert(material.stiffness());
-    FEValues<dim> fe_values(fe, quadrature, update_JxW_values);
-    double        energy = 0;
+    FEValues<dim>                 fe_values(fe, quadrature, update_JxW_values);
+    double                        energy = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
-            energy += 0.5 * (compliance * history[q]->stress) *
-                      history[q]->stress * fe_values.JxW(q);
+            energy += 0.5 * (compliance * history[q]->stress)
+                      * history[q]->stress * fe_values.JxW(q);
         }
     return Utilities::MPI::sum(energy, mpi_communicator);
   }
@@ -147,11 +148,11 @@ namespace VPContact
           fe_values.reinit(cell);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
-            error = std::max(error,
-                             (history[q]->stress -
-                              verification.exact_stress(
-                                fe_values.quadrature_point(q), time))
-                               .norm());
+            error = std::max(
+              error,
+              (history[q]->stress
+               - verification.exact_stress(fe_values.quadrature_point(q), time))
+                .norm());
         }
     return Utilities::MPI::max(error, mpi_communicator);
   }

@@ -71,7 +71,7 @@ namespace VPContact
         for (const std::string &pair :
              Utilities::split_string_list(prm.get("Function constants")))
           {
-            const auto key_value = Utilities::split_string_list(pair, ':');
+            const auto key_value    = Utilities::split_string_list(pair, ':');
             constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
           }
         exact_stress_function = parse_function_entry<dim>(
@@ -113,7 +113,8 @@ namespace VPContact
   {
     exact_stress_function->set_time(time);
     SymmetricTensor<2, dim> sigma;
-    for (unsigned int c = 0; c < SymmetricTensor<2, dim>::n_independent_components;
+    for (unsigned int c = 0;
+         c < SymmetricTensor<2, dim>::n_independent_components;
          ++c)
       sigma.access_raw_entry(c) = exact_stress_function->value(point, c);
     return sigma;
@@ -174,22 +175,21 @@ namespace VPContact
   std::string
   Verification<dim>::summary() const
   {
-    const auto line = [](const char  *what,
-                         const double error,
-                         const double scale) {
-      const double relative = (scale > 0 ? error / scale : error);
-      char         buffer[200];
-      std::snprintf(buffer,
-                    sizeof(buffer),
-                    "Verification: largest %s error / largest %s = %.1e "
-                    "(round-off, below %.0e: %s)\n",
-                    what,
-                    what,
-                    relative,
-                    round_off_level,
-                    relative < round_off_level ? "yes" : "NO");
-      return std::string(buffer);
-    };
+    const auto line
+      = [](const char *what, const double error, const double scale) {
+          const double relative = (scale > 0 ? error / scale : error);
+          char         buffer[200];
+          std::snprintf(buffer,
+                        sizeof(buffer),
+                        "Verification: largest %s error / largest %s = %.1e "
+                        "(round-off, below %.0e: %s)\n",
+                        what,
+                        what,
+                        relative,
+                        round_off_level,
+                        relative < round_off_level ? "yes" : "NO");
+          return std::string(buffer);
+        };
     std::string text;
     if (is_active())
       text += line("nodal displacement", max_nodal_error, max_displacement);

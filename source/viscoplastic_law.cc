@@ -140,8 +140,8 @@ namespace VPContact
   {
     if (L == std::numeric_limits<double>::infinity())
       return "Maxwell, G = -sigma/eta, eta = " + to_text(eta);
-    return "Maxwell truncated, G = -Phi_L(sigma)/eta, eta = " + to_text(eta) +
-           ", L = " + to_text(L);
+    return "Maxwell truncated, G = -Phi_L(sigma)/eta, eta = " + to_text(eta)
+           + ", L = " + to_text(L);
   }
 
 
@@ -194,10 +194,10 @@ namespace VPContact
   ViscoplasticityParameters<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Viscoplasticity");
-    law_name         = prm.get("Law");
-    truncation       = prm.get_double("Truncation L");
-    relaxation_time  = prm.get_double("Relaxation time");
-    truncate_maxwell = prm.get_bool("Truncate Maxwell");
+    law_name          = prm.get("Law");
+    truncation        = prm.get_double("Truncation L");
+    relaxation_time   = prm.get_double("Relaxation time");
+    truncate_maxwell  = prm.get_bool("Truncate Maxwell");
     divergence_factor = prm.get_double("Divergence limit");
     prm.leave_subsection();
     VPContactCheckParameter(divergence_factor > 0,
@@ -230,8 +230,8 @@ namespace VPContact
         truncate_maxwell ? truncation :
                            std::numeric_limits<double>::infinity());
     AssertThrow(false,
-                ExcMessage("Viscoplasticity/Law = " + law_name +
-                           ": unknown law (none, paper or maxwell)."));
+                ExcMessage("Viscoplasticity/Law = " + law_name
+                           + ": unknown law (none, paper or maxwell)."));
     return nullptr;
   }
 

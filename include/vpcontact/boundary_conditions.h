@@ -63,9 +63,9 @@ namespace VPContact
      */
     void
     make_constraints(
-      const DoFHandler<dim>                &dof_handler,
-      AffineConstraints<double>            &constraints,
-      const double                          time,
+      const DoFHandler<dim>               &dof_handler,
+      AffineConstraints<double>           &constraints,
+      const double                         time,
       const TrilinosWrappers::MPI::Vector *previous_displacement) const;
 
     /// Whether the constraints change with time (prescribed displacements).

@@ -5,7 +5,6 @@
 
 #include <deal.II/base/quadrature_point_data.h>
 #include <deal.II/base/symmetric_tensor.h>
-
 #include <deal.II/grid/tria.h>
 
 namespace VPContact
@@ -29,9 +28,9 @@ namespace VPContact
   /// The per-cell storage of QuadraturePointHistory (deal.II's
   /// CellDataStorage, on the locally owned cells).
   template <int dim>
-  using StressHistory =
-    CellDataStorage<typename Triangulation<dim>::cell_iterator,
-                    QuadraturePointHistory<dim>>;
+  using StressHistory
+    = CellDataStorage<typename Triangulation<dim>::cell_iterator,
+                      QuadraturePointHistory<dim>>;
 } // namespace VPContact
 
 #endif

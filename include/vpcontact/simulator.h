@@ -92,7 +92,7 @@ namespace VPContact
     void
     setup_dofs();
     void
-    make_constraints(const double                          time,
+    make_constraints(const double                         time,
                      const TrilinosWrappers::MPI::Vector *previous);
     void
     setup_stress_history();
@@ -146,12 +146,12 @@ namespace VPContact
     parallel::distributed::Triangulation<dim> triangulation;
     const FESystem<dim>                       fe;
     /// The rule of assembly, stress storage and stress output alike.
-    const QGauss<dim>                         quadrature;
-    DoFHandler<dim>                           dof_handler;
-    IndexSet                                  locally_owned_dofs;
-    IndexSet                                  locally_relevant_dofs;
+    const QGauss<dim> quadrature;
+    DoFHandler<dim>   dof_handler;
+    IndexSet          locally_owned_dofs;
+    IndexSet          locally_relevant_dofs;
     /// Constraints on the increment du of the current step.
-    AffineConstraints<double>                 constraints;
+    AffineConstraints<double> constraints;
 
     TrilinosWrappers::SparseMatrix stiffness_matrix;
     TrilinosWrappers::MPI::Vector  rhs;

@@ -161,10 +161,10 @@ namespace VPContact
 
   private:
     double      divergence_factor = 1e6;
-    std::string law_name         = "none";
-    double      truncation       = 1000;
-    double      relaxation_time  = 1;
-    bool        truncate_maxwell = false;
+    std::string law_name          = "none";
+    double      truncation        = 1000;
+    double      relaxation_time   = 1;
+    bool        truncate_maxwell  = false;
   };
 } // namespace VPContact
 

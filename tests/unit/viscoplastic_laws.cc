@@ -44,8 +44,8 @@ main()
   std::cout << "step limits: Maxwell " << maxwell.explicit_step_limit()
             << " (expected 1), paper " << paper.explicit_step_limit()
             << " (expected 2), none "
-            << NoViscoplasticity<2>().explicit_step_limit()
-            << " (expected inf)" << std::endl;
+            << NoViscoplasticity<2>().explicit_step_limit() << " (expected inf)"
+            << std::endl;
   std::cout << "none is zero: " << NoViscoplasticity<2>().is_zero()
             << ", Maxwell is zero: " << maxwell.is_zero() << std::endl;
 }
