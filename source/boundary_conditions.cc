@@ -167,13 +167,7 @@ namespace VPContact
     for (const auto id : contact_ids)
       claim(id, "Contact boundary ids");
 
-    std::map<std::string, double> constants;
-    for (const std::string &pair :
-         Utilities::split_string_list(prm.get("Function constants")))
-      {
-        const auto key_value    = Utilities::split_string_list(pair, ':');
-        constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
-      }
+    const auto constants = parse_function_constants(prm, "Function constants");
     traction_function
       = parse_function_entry<dim>(prm, section, "Traction", dim, constants);
     body_force_function

@@ -28,6 +28,21 @@ namespace VPContact
 
 
 
+  std::map<std::string, double>
+  parse_function_constants(const ParameterHandler &prm,
+                           const std::string      &entry)
+  {
+    std::map<std::string, double> constants;
+    for (const std::string &pair : Utilities::split_string_list(prm.get(entry)))
+      {
+        const auto key_value    = Utilities::split_string_list(pair, ':');
+        constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
+      }
+    return constants;
+  }
+
+
+
   std::string
   zero_expression(const unsigned int n)
   {

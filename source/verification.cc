@@ -50,13 +50,8 @@ namespace VPContact
     prm.enter_subsection("Verification");
     if (!prm.get("Exact displacement").empty())
       {
-        std::map<std::string, double> constants;
-        for (const std::string &pair :
-             Utilities::split_string_list(prm.get("Function constants")))
-          {
-            const auto key_value    = Utilities::split_string_list(pair, ':');
-            constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
-          }
+        const auto constants
+          = parse_function_constants(prm, "Function constants");
         exact_displacement = parse_function_entry<dim>(prm,
                                                        "Verification",
                                                        "Exact displacement",
@@ -67,13 +62,8 @@ namespace VPContact
       exact_displacement.reset();
     if (!prm.get("Exact stress").empty())
       {
-        std::map<std::string, double> constants;
-        for (const std::string &pair :
-             Utilities::split_string_list(prm.get("Function constants")))
-          {
-            const auto key_value    = Utilities::split_string_list(pair, ':');
-            constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
-          }
+        const auto constants
+          = parse_function_constants(prm, "Function constants");
         exact_stress_function = parse_function_entry<dim>(
           prm,
           "Verification",

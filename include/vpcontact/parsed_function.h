@@ -6,6 +6,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -36,6 +37,15 @@ namespace VPContact
                        const std::string                   &entry,
                        const unsigned int                   n_components,
                        const std::map<std::string, double> &constants = {});
+
+  /**
+   * The named constants of the entry @p entry of the current subsection,
+   * written as name:value pairs ("p:55, E:1000"), for the expressions of
+   * that subsection.
+   */
+  std::map<std::string, double>
+  parse_function_constants(const ParameterHandler &prm,
+                           const std::string      &entry);
 
   /// The zero expression with @p n components: "0; 0" for n = 2.
   std::string
