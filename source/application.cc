@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 namespace VPContact
@@ -32,14 +33,44 @@ namespace VPContact
 
 
 
+    // The text of a parameter file, with the file name of every
+    // "include" statement made relative to the file's own folder (deal.II
+    // takes it relative to the working directory), so that a scene can
+    // include another scene next to it wherever the program runs.
+    std::string
+    read_parameter_file(const std::string &filename)
+    {
+      std::ifstream in(filename);
+      AssertThrow(in.good(),
+                  ExcMessage("Cannot open the parameter file '" + filename
+                             + "'. Check the path."));
+      const std::filesystem::path folder
+        = std::filesystem::path(filename).parent_path();
+      std::string text, line;
+      while (std::getline(in, line))
+        {
+          std::istringstream words(line);
+          std::string        keyword, included;
+          if ((words >> keyword >> included)
+              && (keyword == "include" || keyword == "INCLUDE")
+              && std::filesystem::path(included).is_relative())
+            line = keyword + " " + (folder / included).string();
+          text += line + '\n';
+        }
+      return text;
+    }
+
+
+
     // Read "Dimension" alone, skipping the other entries, so that the
     // simulator of the right dimension can then declare and read the rest.
     unsigned int
     read_dimension(const std::string &filename)
     {
-      ParameterHandler prm;
+      ParameterHandler   prm;
+      std::istringstream text(read_parameter_file(filename));
       prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
-      prm.parse_input(filename, "", true);
+      prm.parse_input(text, filename, "", true);
       return prm.get_integer("Dimension");
     }
 
@@ -49,9 +80,10 @@ namespace VPContact
     void
     run_scene(const std::string &filename, const MPI_Comm communicator)
     {
-      ParameterHandler prm;
+      ParameterHandler   prm;
+      std::istringstream text(read_parameter_file(filename));
       Simulator<dim>::declare_parameters(prm);
-      prm.parse_input(filename);
+      prm.parse_input(text, filename);
       const std::string directory
         = std::filesystem::path(filename).parent_path().string();
       Simulator<dim> simulator(prm,

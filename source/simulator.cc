@@ -103,14 +103,7 @@ namespace VPContact
     setup_dofs();
     setup_stress_history();
     assemble_stiffness_matrix();
-    {
-      TimerOutput::Scope             t(computing_timer, "Build preconditioner");
-      std::vector<std::vector<bool>> constant_modes;
-      DoFTools::extract_constant_modes(dof_handler,
-                                       ComponentMask(dim, true),
-                                       constant_modes);
-      linear_solver.initialize(stiffness_matrix, constant_modes);
-    }
+    initialize_linear_solver();
     print_header();
 
     compute_initial_state();
@@ -157,26 +150,86 @@ namespace VPContact
 
   template <int dim>
   void
+  Simulator<dim>::initialize_linear_solver()
+  {
+    TimerOutput::Scope             t(computing_timer, "Build preconditioner");
+    std::vector<std::vector<bool>> constant_modes;
+    DoFTools::extract_constant_modes(dof_handler,
+                                     ComponentMask(dim, true),
+                                     constant_modes);
+    linear_solver.initialize(stiffness_matrix, constant_modes);
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::solve_increment(const double time,
                                   const bool   with_viscoplastic_rate)
   {
+    if (friction_active)
+      friction_active_set.set_bounds(friction, time);
     if (boundary_conditions.has_prescribed_displacement())
       make_constraints(time, &displacement);
-    assemble_rhs(time, with_viscoplastic_rate);
-    {
-      TimerOutput::Scope t(computing_timer, "Solve");
-      // The previous increment is the start vector: in a slowly loaded
-      // quasistatic run consecutive increments are alike.
-      last_linear_iterations
-        = linear_solver.solve(stiffness_matrix, increment_owned, rhs);
-      constraints.distribute(increment_owned);
-    }
+
+    // Without friction one linear solve. With friction, the primal-dual
+    // active set iteration: solve with the current stick and slip sets,
+    // recompute the friction multipliers from the residual, take the next
+    // sets; stop when no node changes. The sets of the previous step are
+    // the start (warm start). The matrix changes only when a node enters or
+    // leaves the stick set; then it is reassembled with the new constraints.
+    last_active_set_iterations = 0;
+    for (unsigned int iteration = 1;; ++iteration)
+      {
+        assemble_rhs(time, with_viscoplastic_rate);
+        if (friction_active)
+          friction_active_set.add_slip_forces(constraints, rhs);
+        {
+          TimerOutput::Scope t(computing_timer, "Solve");
+          // The previous increment is the start vector: in a slowly loaded
+          // quasistatic run consecutive increments are alike.
+          last_linear_iterations
+            = linear_solver.solve(stiffness_matrix, increment_owned, rhs);
+          constraints.distribute(increment_owned);
+        }
+        increment = increment_owned;
+        if (!friction_active)
+          break;
+
+        last_active_set_iterations = iteration;
+        assemble_residual();
+        const auto changes
+          = friction_active_set.update(residual,
+                                       increment,
+                                       material.youngs_modulus(),
+                                       friction.complementarity_factor());
+        if (changes.n_changed == 0)
+          break;
+        AssertThrow(
+          iteration < friction.max_iterations(),
+          ExcMessage(
+            "The stick/slip active set did not converge at t = " + to_text(time)
+            + ": after " + std::to_string(iteration) + " iterations "
+            + std::to_string(changes.n_changed)
+            + " contact node(s) still change set. Raise Contact/Maximum active "
+              "set iterations = "
+            + std::to_string(friction.max_iterations())
+            + ", or try another Contact/Complementarity factor. The output up "
+              "to the previous step is complete in "
+            + output_writer.directory() + "."));
+        if (changes.n_stick_changed > 0)
+          {
+            make_constraints(time, &displacement);
+            assemble_stiffness_matrix();
+            initialize_linear_solver();
+          }
+      }
+
     AssertThrow(std::isfinite(increment_owned.l2_norm()),
                 ExcMessage("The displacement increment at t = " + to_text(time)
                            + " is not finite. The output up to the previous "
                              "step is complete in "
                            + output_writer.directory() + "."));
-    increment = increment_owned;
     displacement_owned += increment_owned;
     displacement = displacement_owned;
   }

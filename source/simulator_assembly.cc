@@ -77,6 +77,50 @@ namespace VPContact
 
   template <int dim>
   void
+  Simulator<dim>::add_cell_loads(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const FEValues<dim>                                  &fe_values,
+    FEFaceValues<dim>                                    &fe_face_values,
+    Vector<double>                                       &cell_vector) const
+  {
+    // (f_B(t), phi_i) + (f_N(t), phi_i)_{Gamma_N}, at the time last given to
+    // boundary_conditions.set_time(); fe_values is reinitialized on cell.
+    const FEValuesExtractors::Vector u(0);
+    Vector<double>                   load(dim);
+    Tensor<1, dim>                   load_tensor;
+    if (boundary_conditions.has_body_force())
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          boundary_conditions.body_force()
+            .vector_value(fe_values.quadrature_point(q), load);
+          for (unsigned int d = 0; d < dim; ++d)
+            load_tensor[d] = load[d];
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            cell_vector(i)
+              += load_tensor * fe_values[u].value(i, q) * fe_values.JxW(q);
+        }
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary()
+          && boundary_conditions.is_traction_boundary(face->boundary_id()))
+        {
+          fe_face_values.reinit(cell, face);
+          for (const unsigned int q : fe_face_values.quadrature_point_indices())
+            {
+              boundary_conditions.traction()
+                .vector_value(fe_face_values.quadrature_point(q), load);
+              for (unsigned int d = 0; d < dim; ++d)
+                load_tensor[d] = load[d];
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                cell_vector(i) += load_tensor * fe_face_values[u].value(i, q)
+                                  * fe_face_values.JxW(q);
+            }
+        }
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::assemble_rhs(const double time,
                                const bool   with_viscoplastic_rate)
   {
@@ -106,8 +150,6 @@ namespace VPContact
     FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
-    Vector<double>                       load(dim);
-    Tensor<1, dim>                       load_tensor;
 
     rhs = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -126,39 +168,12 @@ namespace VPContact
               if (evaluate_rate)
                 point.predictor
                   += k * viscoplastic_law->rate(point.stress, strains[q], 1.);
-              Tensor<1, dim> body_force;
-              if (boundary_conditions.has_body_force())
-                {
-                  boundary_conditions.body_force()
-                    .vector_value(fe_values.quadrature_point(q), load);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    body_force[d] = load[d];
-                }
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_rhs(i)
-                  += (body_force * fe_values[u].value(i, q)
-                      - point.predictor * fe_values[u].symmetric_gradient(i, q))
-                     * fe_values.JxW(q);
+                cell_rhs(i) -= point.predictor
+                               * fe_values[u].symmetric_gradient(i, q)
+                               * fe_values.JxW(q);
             }
-
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary()
-                && boundary_conditions.is_traction_boundary(
-                  face->boundary_id()))
-              {
-                fe_face_values.reinit(cell, face);
-                for (const unsigned int q :
-                     fe_face_values.quadrature_point_indices())
-                  {
-                    boundary_conditions.traction()
-                      .vector_value(fe_face_values.quadrature_point(q), load);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      load_tensor[d] = load[d];
-                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                      cell_rhs(i) += load_tensor * fe_face_values[u].value(i, q)
-                                     * fe_face_values.JxW(q);
-                  }
-              }
+          add_cell_loads(cell, fe_values, fe_face_values, cell_rhs);
 
           // A cell with a prescribed (inhomogeneous) increment moves the
           // known values to the right-hand side, which needs its matrix;
@@ -179,6 +194,61 @@ namespace VPContact
             constraints.distribute_local_to_global(cell_rhs, dof_indices, rhs);
         }
     rhs.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_residual()
+  {
+    TimerOutput::Scope t(computing_timer, "Assemble residual");
+
+    // r_i = (f_B, phi_i) + (f_N, phi_i)_{Gamma_N} - (sigma, eps(phi_i)) with
+    // the stress sigma = sigma_{n-1} + k G_{n-1} + E eps(du) of the current
+    // increment, without condensing the constraints: at a contact node its
+    // tangential part is the friction force (lambda_i m_i), its normal part
+    // the reaction of the foundation. Loads are at the time of the last
+    // assemble_rhs().
+    const QGauss<dim - 1>                face_quadrature(fe.degree + 1);
+    FEValues<dim>                        fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients
+                              | update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim>                    fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_quadrature_points
+                                       | update_JxW_values);
+    const FEValuesExtractors::Vector     u(0);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>                       cell_residual(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
+
+    residual_assembly = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_residual = 0.;
+          fe_values.reinit(cell);
+          fe_values[u].get_function_symmetric_gradients(increment,
+                                                        strain_increments);
+          const auto history = stress_history.get_data(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              const SymmetricTensor<2, dim> stress
+                = history[q]->predictor + material.stress(strain_increments[q]);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                cell_residual(i) -= stress
+                                    * fe_values[u].symmetric_gradient(i, q)
+                                    * fe_values.JxW(q);
+            }
+          add_cell_loads(cell, fe_values, fe_face_values, cell_residual);
+          cell->get_dof_indices(dof_indices);
+          residual_assembly.add(dof_indices, cell_residual);
+        }
+    residual_assembly.compress(VectorOperation::add);
+    residual = residual_assembly;
   }
 
 

@@ -58,10 +58,12 @@ namespace VPContact
           << "  initial state: " << initial_conditions.description() << '\n'
           << "  boundary: " << boundary_conditions.summary() << '\n'
           << "  contact: "
-          << (boundary_conditions.has_contact_boundary() ?
-                "bilateral (u.nu = 0), frictionless in this release "
-                "(Contact/Friction bound is checked, not yet applied)" :
-                "none")
+          << (!boundary_conditions.has_contact_boundary() ?
+                "none" :
+              friction_active ?
+                "bilateral (u.nu = 0) with Tresca friction, primal-dual "
+                "active set" :
+                "bilateral (u.nu = 0), frictionless (friction bound 0)")
           << '\n'
           << "  mesh: " << triangulation.n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " dofs" << '\n'
@@ -149,8 +151,29 @@ namespace VPContact
         statistics.add_value("stress_error_max", error);
         line += "  stress error = " + format("%.2e", error);
       }
+    if (friction_active)
+      {
+        const auto [n_stick, n_slip] = friction_active_set.count();
+        const double utilisation     = friction_active_set.max_utilisation();
+        // Relative to the largest g; slip counts where |w_i| exceeds 1e-8 of
+        // the largest tangential increment.
+        const double violation = friction_active_set.max_violation(1e-8);
+        statistics.add_value("active_set_iterations",
+                             last_active_set_iterations);
+        statistics.add_value("stick_nodes", n_stick);
+        statistics.add_value("slip_nodes", n_slip);
+        statistics.add_value("friction_utilisation", utilisation);
+        statistics.add_value("friction_violation", violation);
+        max_friction_violation = std::max(max_friction_violation, violation);
+        line += "  stick/slip = " + std::to_string(n_stick) + "/"
+                + std::to_string(n_slip)
+                + "  max|sigma_t|/g = " + format("%.4f", utilisation);
+      }
     if (!output_writer.deterministic_screen_output() && n > 0)
       line += "  CG its = " + std::to_string(last_linear_iterations)
+              + (friction_active ?
+                   "  AS its = " + std::to_string(last_active_set_iterations) :
+                   "")
               + format("  (%.3f s)", step_wall_time);
     pcout << line << std::endl;
 
@@ -189,6 +212,26 @@ namespace VPContact
     data_out.add_data_vector(subdomain,
                              "subdomain",
                              DataOut<dim>::type_cell_data);
+
+    // Contact nodes: status (0 none, 1 stick, 2 slip) and tangential
+    // traction sigma_tau, carried by the two components of a nodal vector.
+    TrilinosWrappers::MPI::Vector contact_owned, contact;
+    if (friction_active)
+      {
+        contact_owned.reinit(locally_owned_dofs, mpi_communicator);
+        friction_active_set.fill_output(contact_owned);
+        contact.reinit(locally_owned_dofs,
+                       locally_relevant_dofs,
+                       mpi_communicator);
+        contact = contact_owned;
+        data_out.add_data_vector(
+          contact,
+          std::vector<std::string>{"contact_status", "tangential_traction"},
+          DataOut<dim>::type_dof_data,
+          std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+            dim,
+            DataComponentInterpretation::component_is_scalar));
+      }
     data_out.build_patches();
     output_writer.write_fields(data_out,
                                n,
@@ -203,6 +246,12 @@ namespace VPContact
   Simulator<dim>::print_summary() const
   {
     pcout << '\n' << verification.summary();
+    if (friction_active)
+      pcout << "Tresca conditions at every contact node and step: largest "
+               "violation "
+            << format("%.1e", max_friction_violation)
+            << " of max g (holds to 1e-6: "
+            << (max_friction_violation < 1e-6 ? "yes" : "NO") << ")\n";
     pcout << "Run complete: " << time_discretization.n_steps()
           << " steps; statistics in "
           << "statistics.csv";

@@ -1,4 +1,5 @@
 // The simulator's mesh, degrees of freedom, constraints and sparsity.
+#include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -20,9 +21,22 @@ namespace VPContact
         std::vector<double> times;
         for (unsigned int n = 0; n <= time_discretization.n_steps(); ++n)
           times.push_back(time_discretization.time(n));
-        friction.check_bound(triangulation,
-                             boundary_conditions.contact_boundary_ids(),
-                             times);
+        const double g_max
+          = friction.check_bound(triangulation,
+                                 boundary_conditions.contact_boundary_ids(),
+                                 times);
+        // g = 0 everywhere is frictionless sliding: no active set at all.
+        friction_active = (g_max > 0);
+        AssertThrow(dim == 2 || !friction_active,
+                    ExcMessage(
+                      "Contact/Friction bound: Tresca friction is implemented "
+                      "in 2D only (in 3D the slip direction needs the "
+                      "semismooth Newton method of Hueber, Stadler and "
+                      "Wohlmuth, not written yet). This 3D scene has a "
+                      "friction bound up to "
+                      + to_text(g_max)
+                      + " on its contact boundary: set it to 0 "
+                        "(frictionless bilateral contact) or run in 2D."));
       }
   }
 
@@ -55,6 +69,25 @@ namespace VPContact
                             dsp,
                             mpi_communicator);
 
+    // The contact nodes are read off the constraints without friction; the
+    // sparsity pattern above, built with those, also holds every pattern
+    // with more nodes constrained. All nodes start in the stick set.
+    if (friction_active)
+      {
+        friction_active_set.setup(dof_handler,
+                                  constraints,
+                                  boundary_conditions.contact_boundary_ids(),
+                                  locally_relevant_dofs);
+        make_constraints(0., nullptr);
+        residual_assembly.reinit(locally_owned_dofs,
+                                 locally_relevant_dofs,
+                                 mpi_communicator,
+                                 true);
+        residual.reinit(locally_owned_dofs,
+                        locally_relevant_dofs,
+                        mpi_communicator);
+      }
+
     rhs.reinit(locally_owned_dofs, mpi_communicator);
     displacement_owned.reinit(locally_owned_dofs, mpi_communicator);
     displacement.reinit(locally_owned_dofs,
@@ -81,6 +114,8 @@ namespace VPContact
                                          constraints,
                                          time,
                                          previous);
+    if (friction_active)
+      friction_active_set.add_stick_constraints(constraints);
     constraints.close();
   }
 

@@ -11,6 +11,20 @@
 
 namespace VPContact
 {
+  TrescaDecision
+  tresca_decision(const double lambda,
+                  const double slip,
+                  const double g,
+                  const double c)
+  {
+    const double v = lambda + c * slip;
+    if (std::abs(v) <= g)
+      return {ContactStatus::stick, 0.};
+    return {ContactStatus::slip, v > 0 ? 1. : -1.};
+  }
+
+
+
   template <int dim>
   void
   TrescaFriction<dim>::declare_parameters(ParameterHandler &prm)
@@ -22,8 +36,22 @@ namespace VPContact
                         Patterns::Anything(),
                         "Tresca friction bound g(x, t) >= 0 on the contact "
                         "boundary [N/m^2], an expression in x, y (z) and t. "
-                        "Not yet used: in this release the contact boundary "
-                        "is frictionless (g = 0); the value is checked.");
+                        "g = 0 everywhere is frictionless sliding (no active "
+                        "set iteration is run).");
+      prm.declare_entry("Maximum active set iterations",
+                        "50",
+                        Patterns::Integer(1, 10000),
+                        "The stick/slip iteration of one step stops the run "
+                        "with a message if the sets still change after this "
+                        "many iterations.");
+      prm.declare_entry("Complementarity factor",
+                        "1",
+                        Patterns::Double(0),
+                        "Scales c in the stick/slip test |lambda + c w| <= g; "
+                        "c = factor x (stiffness diagonal of the node) / "
+                        "(its boundary length), of the order of E/h. Any "
+                        "positive value gives the same solution; it can "
+                        "change the number of iterations.");
     }
     prm.leave_subsection();
   }
@@ -43,7 +71,7 @@ namespace VPContact
 
 
   template <int dim>
-  void
+  double
   TrescaFriction<dim>::check_bound(
     const parallel::distributed::Triangulation<dim> &triangulation,
     const std::set<types::boundary_id>              &contact_ids,
@@ -52,6 +80,7 @@ namespace VPContact
     // The smallest value over the contact vertices of this rank and the
     // given times; then over all ranks, so that every rank decides alike.
     double     g_min = std::numeric_limits<double>::max();
+    double     g_max = 0;
     Point<dim> where;
     double     when = 0;
     for (const double t : times)
@@ -64,6 +93,7 @@ namespace VPContact
                 for (const unsigned int v : face->vertex_indices())
                   {
                     const double g = friction_bound->value(face->vertex(v));
+                    g_max          = std::max(g_max, g);
                     if (!(g >= g_min)) // also true for NaN
                       {
                         g_min = (std::isnan(g) ? -1. : g);
@@ -93,6 +123,35 @@ namespace VPContact
                             "finite on the contact boundary; this is its "
                             "value at x = "
                               + text + ".");
+    return Utilities::MPI::max(g_max, triangulation.get_communicator());
+  }
+
+
+
+  template <int dim>
+  double
+  TrescaFriction<dim>::bound(const Point<dim> &point, const double time) const
+  {
+    friction_bound->set_time(time);
+    return friction_bound->value(point);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  TrescaFriction<dim>::max_iterations() const
+  {
+    return iteration_cap;
+  }
+
+
+
+  template <int dim>
+  double
+  TrescaFriction<dim>::complementarity_factor() const
+  {
+    return c_factor;
   }
 
 

@@ -5,6 +5,7 @@
 
 #include <vpcontact/boundary_conditions.h>
 #include <vpcontact/elastic_material.h>
+#include <vpcontact/friction_active_set.h>
 #include <vpcontact/geometry.h>
 #include <vpcontact/initial_conditions.h>
 #include <vpcontact/linear_solver.h>
@@ -24,6 +25,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -85,6 +87,8 @@ namespace VPContact
     solve_step(const unsigned int n);
     void
     solve_increment(const double time, const bool with_viscoplastic_rate);
+    void
+    initialize_linear_solver();
 
     // simulator_setup.cc
     void
@@ -102,6 +106,13 @@ namespace VPContact
     assemble_stiffness_matrix();
     void
     assemble_rhs(const double time, const bool with_viscoplastic_rate);
+    void
+    assemble_residual();
+    void
+    add_cell_loads(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                   const FEValues<dim> &fe_values,
+                   FEFaceValues<dim>   &fe_face_values,
+                   Vector<double>      &cell_vector) const;
 
     // simulator_stress.cc
     void
@@ -137,11 +148,14 @@ namespace VPContact
     std::unique_ptr<ViscoplasticLaw<dim>> viscoplastic_law;
     BoundaryConditions<dim>               boundary_conditions;
     TrescaFriction<dim>                   friction;
-    InitialConditions                     initial_conditions;
-    TimeDiscretization                    time_discretization;
-    LinearSolver                          linear_solver;
-    OutputWriter<dim>                     output_writer;
-    Verification<dim>                     verification;
+    /// Whether the scene has a contact boundary with a friction bound > 0.
+    bool                   friction_active = false;
+    FrictionActiveSet<dim> friction_active_set;
+    InitialConditions      initial_conditions;
+    TimeDiscretization     time_discretization;
+    LinearSolver           linear_solver;
+    OutputWriter<dim>      output_writer;
+    Verification<dim>      verification;
 
     parallel::distributed::Triangulation<dim> triangulation;
     const FESystem<dim>                       fe;
@@ -162,10 +176,18 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector increment_owned;
     TrilinosWrappers::MPI::Vector increment;
 
+    /// r = b - A(du), uncondensed, for the friction multipliers: a vector
+    /// that assembly writes (with ghost entries), and a ghosted copy.
+    TrilinosWrappers::MPI::Vector residual_assembly;
+    TrilinosWrappers::MPI::Vector residual;
+
     StressHistory<dim> stress_history;
 
     Statistics   statistics;
-    unsigned int last_linear_iterations = 0;
+    unsigned int last_linear_iterations     = 0;
+    unsigned int last_active_set_iterations = 0;
+    /// The largest violation of the discrete Tresca conditions so far.
+    double max_friction_violation = 0;
   };
 } // namespace VPContact
 

@@ -1,0 +1,291 @@
+// The primal-dual active set for Tresca friction: contact nodes, their
+// stick/slip decisions, and their constraints and forces.
+#include <vpcontact/friction_active_set.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <cmath>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  FrictionActiveSet<dim>::setup(
+    const DoFHandler<dim>              &dof_handler,
+    const AffineConstraints<double>    &base_constraints,
+    const std::set<types::boundary_id> &contact_ids,
+    const IndexSet                     &locally_relevant_dofs)
+  {
+    communicator = dof_handler.get_communicator();
+    nodes.clear();
+    const auto     &fe         = dof_handler.get_fe();
+    const IndexSet &owned_dofs = dof_handler.locally_owned_dofs();
+    const auto      on_contact = [&](const auto &face) {
+      return face->at_boundary() && contact_ids.count(face->boundary_id()) == 1;
+    };
+
+    // The lumped length m_i = int_{Gamma_C} phi_i ds (trapezoidal rule on
+    // each face), accumulated at the x-component dof of each vertex. The
+    // vector can write into ghost entries, which compress() sends to their
+    // owners.
+    TrilinosWrappers::MPI::Vector lengths;
+    lengths.reinit(owned_dofs, locally_relevant_dofs, communicator, true);
+    const QGauss<dim - 1>                face_quadrature(2);
+    FEFaceValues<dim>                    fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_JxW_values);
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (on_contact(face))
+            {
+              fe_face_values.reinit(cell, face);
+              cell->get_dof_indices(dof_indices);
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                if (fe.system_to_component_index(i).first == 0)
+                  {
+                    double integral = 0;
+                    for (const unsigned int q :
+                         fe_face_values.quadrature_point_indices())
+                      integral += fe_face_values.shape_value(i, q)
+                                  * fe_face_values.JxW(q);
+                    if (integral != 0.)
+                      lengths(dof_indices[i]) += integral;
+                  }
+            }
+    lengths.compress(VectorOperation::add);
+    TrilinosWrappers::MPI::Vector relevant_lengths(owned_dofs,
+                                                   locally_relevant_dofs,
+                                                   communicator);
+    relevant_lengths = lengths;
+
+    // The nodes, on every cell this rank sees (owned or ghost).
+    std::set<types::global_dof_index> seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto &face : cell->face_iterators())
+          if (on_contact(face))
+            for (const unsigned int v : face->vertex_indices())
+              {
+                Node node;
+                for (unsigned int d = 0; d < dim; ++d)
+                  node.dofs[d] = face->vertex_dof_index(v, d);
+                if (!seen.insert(node.dofs[0]).second)
+                  continue;
+
+                // Exactly one free component: the normal one is constrained
+                // by the bilateral condition; none free means a Dirichlet
+                // part holds the node (the clamp wins).
+                unsigned int n_free = 0, free_component = 0;
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (!base_constraints.is_constrained(node.dofs[d]))
+                    {
+                      ++n_free;
+                      free_component = d;
+                    }
+                if (n_free != 1)
+                  continue;
+                node.free_dof = node.dofs[free_component];
+
+                // The constrained component a follows u_a = c u_f; moving
+                // u_f by 1 moves the node by e_f + c e_a: the tangent.
+                node.tangent[free_component] = 1.;
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (d != free_component)
+                    if (const auto *entries
+                        = base_constraints.get_constraint_entries(node.dofs[d]))
+                      for (const auto &[dof, coefficient] : *entries)
+                        if (dof == node.free_dof)
+                          node.tangent[d] = coefficient;
+                node.tangent /= node.tangent.norm();
+
+                node.position = face->vertex(v);
+                node.owned    = owned_dofs.is_element(node.free_dof);
+                node.length   = relevant_lengths(node.dofs[0]);
+                nodes.push_back(node);
+              }
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionActiveSet<dim>::set_bounds(const TrescaFriction<dim> &friction,
+                                     const double               time)
+  {
+    for (auto &node : nodes)
+      node.g = friction.bound(node.position, time);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionActiveSet<dim>::add_stick_constraints(
+    AffineConstraints<double> &constraints) const
+  {
+    for (const auto &node : nodes)
+      if (node.status == ContactStatus::stick
+          && !constraints.is_constrained(node.free_dof))
+        constraints.add_line(node.free_dof);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionActiveSet<dim>::add_slip_forces(
+    const AffineConstraints<double> &constraints,
+    TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    // At a slip node the residual must be lambda_i m_i t_i with
+    // lambda_i = g_i s_i, i.e. the system gets the force -m_i g_i s_i t_i.
+    Vector<double>                       force(dim);
+    std::vector<types::global_dof_index> dofs(dim);
+    for (const auto &node : nodes)
+      if (node.owned && node.status == ContactStatus::slip)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              force(d)
+                = -node.length * node.g * node.direction * node.tangent[d];
+              dofs[d] = node.dofs[d];
+            }
+          constraints.distribute_local_to_global(force, dofs, rhs);
+        }
+    rhs.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  typename FrictionActiveSet<dim>::Changes
+  FrictionActiveSet<dim>::update(const TrilinosWrappers::MPI::Vector &residual,
+                                 const TrilinosWrappers::MPI::Vector &increment,
+                                 const double youngs_modulus,
+                                 const double c_factor)
+  {
+    Changes changes;
+    for (auto &node : nodes)
+      {
+        double r_t = 0, w_t = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            r_t += node.tangent[d] * residual(node.dofs[d]);
+            w_t += node.tangent[d] * increment(node.dofs[d]);
+          }
+        node.lambda = r_t / node.length;
+        node.slip   = w_t;
+
+        // c of the order of E/h, so that lambda and c w compare alike.
+        const double c    = c_factor * youngs_modulus / node.length;
+        const auto   next = tresca_decision(node.lambda, node.slip, node.g, c);
+        const bool   stick_changed = (next.status != node.status);
+        const bool   changed       = stick_changed
+                             || (next.status == ContactStatus::slip
+                                 && next.direction != node.direction);
+        if (node.owned)
+          {
+            changes.n_changed += changed;
+            changes.n_stick_changed += stick_changed;
+          }
+        node.status    = next.status;
+        node.direction = next.direction;
+      }
+    changes.n_changed = Utilities::MPI::sum(changes.n_changed, communicator);
+    changes.n_stick_changed
+      = Utilities::MPI::sum(changes.n_stick_changed, communicator);
+    return changes;
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  FrictionActiveSet<dim>::count() const
+  {
+    unsigned int n_stick = 0, n_slip = 0;
+    for (const auto &node : nodes)
+      if (node.owned)
+        (node.status == ContactStatus::stick ? n_stick : n_slip) += 1;
+    return {Utilities::MPI::sum(n_stick, communicator),
+            Utilities::MPI::sum(n_slip, communicator)};
+  }
+
+
+
+  template <int dim>
+  double
+  FrictionActiveSet<dim>::max_utilisation() const
+  {
+    double utilisation = 0;
+    for (const auto &node : nodes)
+      if (node.owned && node.g > 0)
+        utilisation = std::max(utilisation, std::abs(node.lambda) / node.g);
+    return Utilities::MPI::max(utilisation, communicator);
+  }
+
+
+
+  template <int dim>
+  double
+  FrictionActiveSet<dim>::max_violation(const double slip_tolerance) const
+  {
+    double violation = 0, g_scale = 0, w_scale = 0;
+    for (const auto &node : nodes)
+      if (node.owned)
+        {
+          g_scale = std::max(g_scale, node.g);
+          w_scale = std::max(w_scale, std::abs(node.slip));
+        }
+    g_scale = Utilities::MPI::max(g_scale, communicator);
+    w_scale = Utilities::MPI::max(w_scale, communicator);
+    for (const auto &node : nodes)
+      if (node.owned)
+        {
+          violation = std::max(violation, std::abs(node.lambda) - node.g);
+          if (std::abs(node.slip) > slip_tolerance * w_scale)
+            violation
+              = std::max(violation,
+                         std::abs(node.lambda
+                                  - node.g * (node.slip > 0 ? 1. : -1.)));
+        }
+    violation = Utilities::MPI::max(violation, communicator);
+    return g_scale > 0 ? violation / g_scale : violation;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionActiveSet<dim>::fill_output(
+    TrilinosWrappers::MPI::Vector &output) const
+  {
+    for (const auto &node : nodes)
+      if (node.owned)
+        {
+          output(node.dofs[0]) = static_cast<double>(node.status);
+          output(node.dofs[1]) = -node.lambda;
+        }
+    output.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  bool
+  FrictionActiveSet<dim>::empty() const
+  {
+    return Utilities::MPI::max(static_cast<unsigned int>(nodes.size()),
+                               communicator)
+           == 0;
+  }
+
+
+
+  template class FrictionActiveSet<2>;
+  template class FrictionActiveSet<3>;
+} // namespace VPContact
