@@ -223,18 +223,32 @@ namespace VPContact
     // degrees of freedom that are already constrained, and so does the
     // normal-flux function below, so whatever is constrained first wins.
     // Clamping first makes "the clamp wins at a corner" hold.
-    const Functions::ZeroFunction<dim> zero(dim);
+    //
+    // The element may have more components than the displacement (the
+    // damage): functions and masks cover all of them, and only the
+    // displacement components are ever selected.
+    const unsigned int n_components = dof_handler.get_fe().n_components();
+    const Functions::ZeroFunction<dim> zero(n_components);
+    const auto on_components = [&](const ComponentMask &displacement_mask) {
+      ComponentMask mask(n_components, false);
+      for (unsigned int d = 0; d < dim; ++d)
+        mask.set(d, displacement_mask[d]);
+      return mask;
+    };
+    const ComponentMask all_displacements
+      = on_components(ComponentMask(dim, true));
     for (const auto id : clamped_ids)
       VectorTools::interpolate_boundary_values(dof_handler,
                                                id,
                                                zero,
-                                               constraints);
+                                               constraints,
+                                               all_displacements);
     for (const auto &[id, mask] : roller_ids)
       VectorTools::interpolate_boundary_values(dof_handler,
                                                id,
                                                zero,
                                                constraints,
-                                               mask);
+                                               on_components(mask));
 
     // Prescribed displacements: the increment of a step is g(t_n) minus the
     // current nodal value, so that u_n = g(t_n) holds exactly even if u_0
@@ -242,13 +256,16 @@ namespace VPContact
     if (!prescribed_ids.empty())
       {
         prescribed_function->set_time(time);
+        const DisplacementFunction<dim> g_on_all_components(
+          *prescribed_function,
+          n_components);
         std::map<types::global_dof_index, double> values;
         for (const auto &[id, mask] : prescribed_ids)
           VectorTools::interpolate_boundary_values(dof_handler,
                                                    id,
-                                                   *prescribed_function,
+                                                   g_on_all_components,
                                                    values,
-                                                   mask);
+                                                   on_components(mask));
         for (const auto &[dof, value] : values)
           if (constraints.can_store_line(dof)
               && !constraints.is_constrained(dof))

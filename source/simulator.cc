@@ -11,6 +11,29 @@
 
 namespace VPContact
 {
+  namespace
+  {
+    // The finite element: Q1 displacement, plus a Q1 damage component when
+    // the scene has damage (read here because the element is built before
+    // the modules parse their sections).
+    template <int dim>
+    std::unique_ptr<const FESystem<dim>>
+    make_finite_element(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Damage");
+      const bool with_damage = (prm.get("Model") != "none");
+      prm.leave_subsection();
+      if (with_damage)
+        return std::make_unique<const FESystem<dim>>(FE_Q<dim>(1),
+                                                     dim,
+                                                     FE_Q<dim>(1),
+                                                     1);
+      return std::make_unique<const FESystem<dim>>(FE_Q<dim>(1), dim);
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Simulator<dim>::declare_parameters(ParameterHandler &prm)
@@ -22,6 +45,7 @@ namespace VPContact
     Geometry<dim>::declare_parameters(prm);
     ElasticMaterial<dim>::declare_parameters(prm);
     ViscoplasticityParameters<dim>::declare_parameters(prm);
+    DamageModel<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm);
     TrescaFriction<dim>::declare_parameters(prm);
     InitialConditions::declare_parameters(prm);
@@ -47,7 +71,8 @@ namespace VPContact
                     typename Triangulation<dim>::MeshSmoothing(
                       Triangulation<dim>::smoothing_on_refinement
                       | Triangulation<dim>::smoothing_on_coarsening))
-    , fe(FE_Q<dim>(1), dim)
+    , fe_storage(make_finite_element<dim>(prm))
+    , fe(*fe_storage)
     , quadrature(2)
     , dof_handler(triangulation)
   {
@@ -55,13 +80,15 @@ namespace VPContact
     material.parse_parameters(prm);
     viscoplasticity.parse_parameters(prm);
     viscoplastic_law = viscoplasticity.create_law();
+    damage_model.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
     friction.parse_parameters(prm);
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
+    damage_solver.parse_parameters(prm);
     output_writer.parse_parameters(prm);
-    verification.parse_parameters(prm);
+    verification.parse_parameters(prm, fe.n_components());
     check_stability_limits();
   }
 
@@ -102,6 +129,8 @@ namespace VPContact
     make_mesh();
     setup_dofs();
     setup_stress_history();
+    if (damage_model.is_active())
+      setup_damage();
     assemble_stiffness_matrix();
     initialize_linear_solver();
     print_header();
@@ -142,8 +171,13 @@ namespace VPContact
   void
   Simulator<dim>::solve_step(const unsigned int n)
   {
+    // Steps 1-3 of the scheme (predictor, displacement, stress), then step
+    // 4 (damage), which uses only data of step n-1: the source phi_{n-1}
+    // stored by the assembly of step 2, and zeta_{n-1}.
     solve_increment(time_discretization.time(n), true);
     update_stress(n);
+    if (damage_model.is_active())
+      solve_damage(n);
   }
 
 
@@ -154,8 +188,12 @@ namespace VPContact
   {
     TimerOutput::Scope             t(computing_timer, "Build preconditioner");
     std::vector<std::vector<bool>> constant_modes;
+    // One constant mode per component, the damage included: in the
+    // displacement system the damage rows are decoupled (held at zero), and
+    // a near-null-space vector that vanishes on them leaves ML with empty
+    // aggregates there.
     DoFTools::extract_constant_modes(dof_handler,
-                                     ComponentMask(dim, true),
+                                     ComponentMask(fe.n_components(), true),
                                      constant_modes);
     linear_solver.initialize(stiffness_matrix, constant_modes);
   }
@@ -170,7 +208,7 @@ namespace VPContact
     if (friction_active)
       friction_active_set.set_bounds(friction, time);
     if (boundary_conditions.has_prescribed_displacement())
-      make_constraints(time, &displacement);
+      make_constraints(time, &solution);
 
     // Without friction one linear solve. With friction, the primal-dual
     // active set iteration: solve with the current stick and slip sets,
@@ -219,7 +257,7 @@ namespace VPContact
             + output_writer.directory() + "."));
         if (changes.n_stick_changed > 0)
           {
-            make_constraints(time, &displacement);
+            make_constraints(time, &solution);
             assemble_stiffness_matrix();
             initialize_linear_solver();
           }
@@ -230,8 +268,8 @@ namespace VPContact
                            + " is not finite. The output up to the previous "
                              "step is complete in "
                            + output_writer.directory() + "."));
-    displacement_owned += increment_owned;
-    displacement = displacement_owned;
+    solution_owned += increment_owned;
+    solution = solution_owned;
   }
 
 

@@ -135,6 +135,9 @@ namespace VPContact
     const double k = time_discretization.step_size();
     const bool   evaluate_rate
       = with_viscoplastic_rate && !viscoplastic_law->is_zero();
+    const bool                       with_damage = damage_model.is_active();
+    const FEValuesExtractors::Scalar zeta(dim);
+    std::vector<double>              damage_values(quadrature.size(), 1.);
     const QGauss<dim - 1>            face_quadrature(fe.degree + 1);
     FEValues<dim>                    fe_values(fe,
                             quadrature,
@@ -157,17 +160,27 @@ namespace VPContact
         {
           cell_rhs = 0.;
           fe_values.reinit(cell);
-          if (evaluate_rate)
-            fe_values[u].get_function_symmetric_gradients(displacement,
-                                                          strains);
+          if (evaluate_rate || with_damage)
+            fe_values[u].get_function_symmetric_gradients(solution, strains);
+          if (with_damage)
+            fe_values[zeta].get_function_values(solution, damage_values);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               auto &point     = *history[q];
               point.predictor = point.stress;
               if (evaluate_rate)
-                point.predictor
-                  += k * viscoplastic_law->rate(point.stress, strains[q], 1.);
+                point.predictor += k
+                                   * viscoplastic_law->rate(point.stress,
+                                                            strains[q],
+                                                            damage_values[q]);
+              if (with_damage)
+                point.damage_source
+                  = damage_model.source().value(strains[q],
+                                                point.stress,
+                                                damage_values[q],
+                                                fe_values.quadrature_point(q),
+                                                time - k);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 cell_rhs(i) -= point.predictor
                                * fe_values[u].symmetric_gradient(i, q)

@@ -56,6 +56,7 @@ namespace VPContact
           << ", nu = " << material.poisson_ratio() << '\n'
           << "  viscoplastic law: " << viscoplastic_law->description() << '\n'
           << "  initial state: " << initial_conditions.description() << '\n'
+          << "  damage: " << damage_model.description() << '\n'
           << "  boundary: " << boundary_conditions.summary() << '\n'
           << "  contact: "
           << (!boundary_conditions.has_contact_boundary() ?
@@ -101,7 +102,7 @@ namespace VPContact
             double norm_square = 0;
             for (unsigned int d = 0; d < dim; ++d)
               norm_square
-                += std::pow(displacement(cell->vertex_dof_index(v, d)), 2);
+                += std::pow(solution(cell->vertex_dof_index(v, d)), 2);
             u_max = std::max(u_max, std::sqrt(norm_square));
           }
     u_max = Utilities::MPI::max(u_max, mpi_communicator);
@@ -129,7 +130,7 @@ namespace VPContact
     if (verification.is_active())
       {
         const auto errors
-          = verification.compute_errors(dof_handler, displacement, time, u_max);
+          = verification.compute_errors(dof_handler, solution, time, u_max);
         statistics.add_value("u_error_max_nodal", errors.max_nodal);
         statistics.add_value("u_error_L2", errors.l2);
         // Errors are round-off in verification scenes: printed with two
@@ -150,6 +151,19 @@ namespace VPContact
                                                              mpi_communicator));
         statistics.add_value("stress_error_max", error);
         line += "  stress error = " + format("%.2e", error);
+      }
+    if (damage_model.is_active())
+      {
+        add_damage_statistics(line);
+        if (verification.has_exact_damage())
+          {
+            const double error = verification.damage_error(dof_handler,
+                                                           solution,
+                                                           damage_dofs,
+                                                           time);
+            statistics.add_value("damage_error_max", error);
+            line += "  damage error = " + format("%.2e", error);
+          }
       }
     if (friction_active)
       {
@@ -190,15 +204,23 @@ namespace VPContact
                                const Vector<double>              &von_mises,
                                const std::vector<Vector<double>> &components)
   {
+    // The solution: displacement (a vector) and, in damage scenes, zeta.
+    std::vector<std::string> solution_names(dim, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    if (damage_model.is_active())
+      {
+        solution_names.emplace_back("damage");
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(
-      displacement,
-      std::vector<std::string>(dim, "displacement"),
-      DataOut<dim>::type_dof_data,
-      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-        dim,
-        DataComponentInterpretation::component_is_part_of_vector));
+    data_out.add_data_vector(solution,
+                             solution_names,
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
     data_out.add_data_vector(von_mises,
                              "von_mises",
                              DataOut<dim>::type_cell_data);
@@ -246,6 +268,12 @@ namespace VPContact
   Simulator<dim>::print_summary() const
   {
     pcout << '\n' << verification.summary();
+    if (damage_model.is_active())
+      pcout << "Damage bounds 0 <= zeta <= 1 at every node and step: largest "
+               "violation "
+            << max_damage_violation
+            << " (exactly 0: " << (max_damage_violation == 0. ? "yes" : "NO")
+            << ")\n";
     if (friction_active)
       pcout << "Tresca conditions at every contact node and step: largest "
                "violation "

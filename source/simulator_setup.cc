@@ -89,10 +89,10 @@ namespace VPContact
       }
 
     rhs.reinit(locally_owned_dofs, mpi_communicator);
-    displacement_owned.reinit(locally_owned_dofs, mpi_communicator);
-    displacement.reinit(locally_owned_dofs,
-                        locally_relevant_dofs,
-                        mpi_communicator);
+    solution_owned.reinit(locally_owned_dofs, mpi_communicator);
+    solution.reinit(locally_owned_dofs,
+                    locally_relevant_dofs,
+                    mpi_communicator);
     increment_owned.reinit(locally_owned_dofs, mpi_communicator);
     increment.reinit(locally_owned_dofs,
                      locally_relevant_dofs,
@@ -116,6 +116,12 @@ namespace VPContact
                                          previous);
     if (friction_active)
       friction_active_set.add_stick_constraints(constraints);
+    // The displacement step leaves the damage alone: its increment is held
+    // at zero there.
+    if (damage_model.is_active())
+      for (const auto dof : relevant_dofs_of_components(dim, dim + 1))
+        if (!constraints.is_constrained(dof))
+          constraints.add_line(dof);
     constraints.close();
   }
 

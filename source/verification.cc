@@ -1,8 +1,11 @@
 // Errors against a closed-form displacement (section "Verification").
+#include <vpcontact/input_error.h>
 #include <vpcontact/parsed_function.h>
 #include <vpcontact/verification.h>
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -32,6 +35,13 @@ namespace VPContact
                         "order xx; yy; xy (3D: xx; yy; zz; xy; xz; yz). The "
                         "largest error over the quadrature points is then "
                         "printed and written to statistics.csv.");
+      prm.declare_entry("Exact damage",
+                        "",
+                        Patterns::Anything(),
+                        "If not empty: the exact damage zeta(x, t) in damage "
+                        "scenes (muParser, with min and max). Its largest "
+                        "nodal error is then printed and written to "
+                        "statistics.csv.");
       prm.declare_entry("Function constants",
                         "",
                         Patterns::Map(Patterns::Anything(), Patterns::Double()),
@@ -45,9 +55,26 @@ namespace VPContact
 
   template <int dim>
   void
-  Verification<dim>::parse_parameters(ParameterHandler &prm)
+  Verification<dim>::parse_parameters(ParameterHandler  &prm,
+                                      const unsigned int n_components)
   {
+    n_fe_components = n_components;
     prm.enter_subsection("Verification");
+    exact_damage.reset();
+    if (!prm.get("Exact damage").empty())
+      {
+        VPContactCheckParameter(n_components > dim,
+                                "Verification/Exact damage",
+                                prm.get("Exact damage"),
+                                "this scene has no damage field (Damage/Model "
+                                "= none); leave the entry empty.");
+        exact_damage = parse_function_entry<dim>(
+          prm,
+          "Verification",
+          "Exact damage",
+          1,
+          parse_function_constants(prm, "Function constants"));
+      }
     if (!prm.get("Exact displacement").empty())
       {
         const auto constants
@@ -83,6 +110,43 @@ namespace VPContact
   Verification<dim>::is_active() const
   {
     return exact_displacement != nullptr;
+  }
+
+
+
+  template <int dim>
+  bool
+  Verification<dim>::has_exact_damage() const
+  {
+    return exact_damage != nullptr;
+  }
+
+
+
+  template <int dim>
+  double
+  Verification<dim>::damage_error(const DoFHandler<dim> &dof_handler,
+                                  const TrilinosWrappers::MPI::Vector &solution,
+                                  const IndexSet &damage_dofs,
+                                  const double    time)
+  {
+    exact_damage->set_time(time);
+    const VectorFunctionFromScalarFunctionObject<dim> exact(
+      [&](const Point<dim> &p) { return exact_damage->value(p); },
+      dim,
+      n_fe_components);
+    ComponentMask mask(n_fe_components, false);
+    mask.set(dim, true);
+    TrilinosWrappers::MPI::Vector nodal(dof_handler.locally_owned_dofs(),
+                                        solution.get_mpi_communicator());
+    VectorTools::interpolate(dof_handler, exact, nodal, mask);
+    double error = 0;
+    for (const auto dof : damage_dofs)
+      if (dof_handler.locally_owned_dofs().is_element(dof))
+        error = std::max(error, std::abs(nodal(dof) - solution(dof)));
+    error = Utilities::MPI::max(error, solution.get_mpi_communicator());
+    max_damage_error = std::max(max_damage_error, error);
+    return error;
   }
 
 
@@ -137,19 +201,37 @@ namespace VPContact
     Errors                        errors;
     TrilinosWrappers::MPI::Vector nodal(dof_handler.locally_owned_dofs(),
                                         solution.get_mpi_communicator());
-    VectorTools::interpolate(dof_handler, *exact_displacement, nodal);
+    // The exact displacement on all components of the element (the damage
+    // component, if any, gets 0 and is left out of the errors).
+    const DisplacementFunction<dim>    padded(*exact_displacement,
+                                           n_fe_components);
+    const ComponentSelectFunction<dim> displacement_only(std::make_pair(0u,
+                                                                        dim),
+                                                         n_fe_components);
+    VectorTools::interpolate(dof_handler, padded, nodal);
     TrilinosWrappers::MPI::Vector owned(nodal);
     owned = solution; // imports the locally owned part of the ghosted vector
     nodal -= owned;
+    if (n_fe_components > dim) // the damage entries are not displacement
+      {
+        ComponentMask damage_mask(n_fe_components, false);
+        damage_mask.set(dim, true);
+        const IndexSet damage
+          = DoFTools::extract_dofs(dof_handler, damage_mask);
+        for (const auto dof : damage)
+          nodal(dof) = 0.;
+        nodal.compress(VectorOperation::insert);
+      }
     errors.max_nodal = nodal.linfty_norm();
 
     Vector<float> cellwise(dof_handler.get_triangulation().n_active_cells());
     VectorTools::integrate_difference(dof_handler,
                                       solution,
-                                      *exact_displacement,
+                                      padded,
                                       cellwise,
                                       QGauss<dim>(3),
-                                      VectorTools::L2_norm);
+                                      VectorTools::L2_norm,
+                                      &displacement_only);
     errors.l2
       = VectorTools::compute_global_error(dof_handler.get_triangulation(),
                                           cellwise,
@@ -185,6 +267,8 @@ namespace VPContact
       text += line("nodal displacement", max_nodal_error, max_displacement);
     if (has_exact_stress())
       text += line("stress", max_stress_error, max_stress);
+    if (has_exact_damage())
+      text += line("nodal damage", max_damage_error, 1.);
     return text;
   }
 

@@ -47,6 +47,31 @@ namespace VPContact
   parse_function_constants(const ParameterHandler &prm,
                            const std::string      &entry);
 
+  /**
+   * A function with dim components (a displacement) seen as a function with
+   * @p n_components components, zero beyond the first dim, to be used with
+   * a finite element that has more components (the damage).
+   */
+  template <int dim>
+  class DisplacementFunction : public Function<dim>
+  {
+  public:
+    DisplacementFunction(const Function<dim> &displacement,
+                         const unsigned int   n_components)
+      : Function<dim>(n_components)
+      , displacement(displacement)
+    {}
+
+    double
+    value(const Point<dim> &p, const unsigned int component) const override
+    {
+      return component < dim ? displacement.value(p, component) : 0.;
+    }
+
+  private:
+    const Function<dim> &displacement;
+  };
+
   /// The zero expression with @p n components: "0; 0" for n = 2.
   std::string
   zero_expression(const unsigned int n);

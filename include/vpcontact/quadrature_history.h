@@ -16,13 +16,17 @@ namespace VPContact
    * step-18's PointHistory). The stress sigma_n is the paper's discrete
    * stress; the predictor sigma_{n-1} + k G_{n-1} is computed once per step
    * during the assembly of the right-hand side and reused by the stress
-   * update, so that G is evaluated once per point and step.
+   * update, so that G is evaluated once per point and step; the damage
+   * source phi_{n-1} is evaluated there too, with the same state of step
+   * n-1, and used by the damage step.
    */
   template <int dim>
   struct QuadraturePointHistory
   {
     SymmetricTensor<2, dim> stress;
     SymmetricTensor<2, dim> predictor;
+    /// phi_{n-1}, the damage source of the current step (damage scenes).
+    double damage_source = 0;
   };
 
   /// The per-cell storage of QuadraturePointHistory (deal.II's

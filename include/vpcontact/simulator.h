@@ -4,6 +4,8 @@
 #define vpcontact_simulator_h
 
 #include <vpcontact/boundary_conditions.h>
+#include <vpcontact/damage_bounds.h>
+#include <vpcontact/damage_model.h>
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/friction_active_set.h>
 #include <vpcontact/geometry.h>
@@ -47,6 +49,7 @@ namespace VPContact
    * - simulator_assembly.cc: the stiffness matrix (once per mesh) and the
    *   right-hand side of a step;
    * - simulator_stress.cc: the stress update and its safeguards;
+   * - simulator_damage.cc: the damage field and its obstacle problem;
    * - simulator_output.cc: statistics, screen and field output.
    *
    * The unknowns are the displacement, Q1 in every component of one
@@ -125,6 +128,21 @@ namespace VPContact
     double
     stress_error(const double time) const;
 
+    // simulator_damage.cc
+    IndexSet
+    relevant_dofs_of_components(const unsigned int first,
+                                const unsigned int last) const;
+    void
+    setup_damage();
+    void
+    make_damage_constraints();
+    void
+    assemble_damage(const bool residual_only);
+    void
+    solve_damage(const unsigned int n);
+    void
+    add_damage_statistics(std::string &line);
+
     // simulator_output.cc
     void
     print_header() const;
@@ -146,6 +164,7 @@ namespace VPContact
     ElasticMaterial<dim>                  material;
     ViscoplasticityParameters<dim>        viscoplasticity;
     std::unique_ptr<ViscoplasticLaw<dim>> viscoplastic_law;
+    DamageModel<dim>                      damage_model;
     BoundaryConditions<dim>               boundary_conditions;
     TrescaFriction<dim>                   friction;
     /// Whether the scene has a contact boundary with a friction bound > 0.
@@ -158,7 +177,9 @@ namespace VPContact
     Verification<dim>      verification;
 
     parallel::distributed::Triangulation<dim> triangulation;
-    const FESystem<dim>                       fe;
+    /// Q1 displacement, and a Q1 damage component in damage scenes only.
+    const std::unique_ptr<const FESystem<dim>> fe_storage;
+    const FESystem<dim>                       &fe;
     /// The rule of assembly, stress storage and stress output alike.
     const QGauss<dim> quadrature;
     DoFHandler<dim>   dof_handler;
@@ -170,8 +191,8 @@ namespace VPContact
     TrilinosWrappers::SparseMatrix stiffness_matrix;
     TrilinosWrappers::MPI::Vector  rhs;
     /// u_n: owned part and ghosted copy for evaluation and output.
-    TrilinosWrappers::MPI::Vector displacement_owned;
-    TrilinosWrappers::MPI::Vector displacement;
+    TrilinosWrappers::MPI::Vector solution_owned;
+    TrilinosWrappers::MPI::Vector solution;
     /// du = u_n - u_{n-1}: owned part (the solver's vector), ghosted copy.
     TrilinosWrappers::MPI::Vector increment_owned;
     TrilinosWrappers::MPI::Vector increment;
@@ -182,6 +203,24 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector residual;
 
     StressHistory<dim> stress_history;
+
+    // The damage step (damage scenes only): its own constraints (every
+    // displacement dof held, the active bounds), matrix and vectors on the
+    // same DoFHandler, and its active set.
+    IndexSet                       damage_dofs;
+    DamageBounds                   damage_bounds;
+    AffineConstraints<double>      damage_constraints;
+    TrilinosWrappers::SparseMatrix damage_matrix;
+    TrilinosWrappers::MPI::Vector  damage_rhs;
+    TrilinosWrappers::MPI::Vector  damage_owned;
+    TrilinosWrappers::MPI::Vector  damage;
+    TrilinosWrappers::MPI::Vector  damage_residual_assembly;
+    TrilinosWrappers::MPI::Vector  damage_residual;
+    TrilinosWrappers::MPI::Vector  lumped_mass;
+    LinearSolver                   damage_solver;
+    unsigned int                   last_damage_iterations = 0;
+    double                         last_damage_clip       = 0;
+    double                         max_damage_violation   = 0;
 
     Statistics   statistics;
     unsigned int last_linear_iterations     = 0;

@@ -20,7 +20,8 @@ namespace VPContact
    * reports the largest nodal error max_i |u_h(x_i) - u(x_i)| and the L2
    * error ||u_h - u||, which are round-off for a solution in the finite
    * element space. When "Exact stress" is given, every step reports the
-   * largest error of the quadrature point stress.
+   * largest error of the quadrature point stress; "Exact damage", the
+   * largest nodal error of the damage.
    */
   template <int dim>
   class Verification
@@ -35,12 +36,27 @@ namespace VPContact
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /// @p n_components: of the finite element (dim, or dim + 1 with damage).
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const unsigned int n_components);
 
     /// Whether an exact displacement is given.
     bool
     is_active() const;
+
+    /// Whether an exact damage is given.
+    bool
+    has_exact_damage() const;
+
+    /**
+     * max_i |zeta_h(x_i) - zeta(x_i, time)| over the locally owned
+     * @p damage_dofs (all ranks); the largest is kept for summary().
+     */
+    double
+    damage_error(const DoFHandler<dim>               &dof_handler,
+                 const TrilinosWrappers::MPI::Vector &solution,
+                 const IndexSet                      &damage_dofs,
+                 const double                         time);
 
     /// Whether an exact stress is given.
     bool
@@ -82,6 +98,9 @@ namespace VPContact
 
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
     std::unique_ptr<FunctionParser<dim>> exact_stress_function;
+    std::unique_ptr<FunctionParser<dim>> exact_damage;
+    unsigned int                         n_fe_components  = dim;
+    double                               max_damage_error = 0;
     double                               max_stress_error = 0;
     double                               max_stress       = 0;
   };

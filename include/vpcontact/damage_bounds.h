@@ -1,0 +1,85 @@
+// The bounds 0 <= zeta <= 1 of the damage, enforced exactly by a primal-dual
+// active set on the nodal values (step-41's obstacle method, two-sided).
+#ifndef vpcontact_damage_bounds_h
+#define vpcontact_damage_bounds_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <utility>
+#include <vector>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /// Where a nodal damage value is: at a bound, or free between them.
+  enum class BoundStatus
+  {
+    lower = -1, // zeta = 0, fully damaged
+    free  = 0,
+    upper = 1 // zeta = 1, sound
+  };
+
+  /**
+   * The primal-dual active set decision for one node of the box [0, 1].
+   * With lambda = (b - K zeta)_i the residual (the multiplier: lambda > 0
+   * pushes up against 1, lambda < 0 down against 0) and c > 0, the
+   * conditions 0 <= zeta <= 1, lambda (zeta - 1) = 0 where lambda > 0,
+   * lambda zeta = 0 where lambda < 0 are equivalent to
+   *   lambda = max(0, lambda + c (zeta - 1)) + min(0, lambda + c zeta),
+   * whose semismooth Newton step is: upper where lambda + c (zeta - 1) > 0,
+   * lower where lambda + c zeta < 0, free elsewhere.
+   */
+  BoundStatus
+  box_decision(const double lambda, const double zeta, const double c);
+
+  /**
+   * The active sets of the damage bounds on the locally relevant damage
+   * degrees of freedom. Decisions are taken on every relevant node from
+   * ghosted vectors (the same on every rank that sees it); changes are
+   * counted on owned nodes and summed over the ranks.
+   */
+  class DamageBounds
+  {
+  public:
+    /**
+     * @p damage_dofs are the locally relevant damage degrees of freedom,
+     * @p lumped_mass a ghosted vector of the lumped masses m_i. All nodes
+     * start free.
+     */
+    void
+    setup(const IndexSet                      &damage_dofs,
+          const IndexSet                      &locally_owned_dofs,
+          const TrilinosWrappers::MPI::Vector &lumped_mass,
+          const MPI_Comm                       communicator);
+
+    /// zeta_i = 0 on the lower set, zeta_i = 1 on the upper set.
+    void
+    add_constraints(AffineConstraints<double> &constraints) const;
+
+    /**
+     * The next sets from the ghosted @p residual and @p damage, with
+     * c = m_i / k (the diagonal of M/k). Returns the number of nodes that
+     * changed set, on all ranks.
+     */
+    unsigned int
+    update(const TrilinosWrappers::MPI::Vector &residual,
+           const TrilinosWrappers::MPI::Vector &damage,
+           const double                         time_step);
+
+    /// Global sizes of the lower and upper sets.
+    std::pair<unsigned int, unsigned int>
+    count() const;
+
+  private:
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  mass;
+    std::vector<bool>                    owned;
+    std::vector<BoundStatus>             status;
+    MPI_Comm                             communicator = MPI_COMM_WORLD;
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,67 @@
+// The gradient damage law (2) of the paper: whether a scene has damage, its
+// diffusion kappa, its source phi and its initial value, from the section
+// "Damage".
+#ifndef vpcontact_damage_model_h
+#define vpcontact_damage_model_h
+
+#include <vpcontact/damage_source.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * Section "Damage". With "Model = gradient" the damage zeta is a second
+   * field (Q1, one more component of the FESystem) solving, at each step,
+   * the obstacle problem of the paper's scheme (14):
+   *   ((zeta_n - zeta_{n-1})/k, xi - zeta_n) + kappa (grad zeta_n,
+   *   grad(xi - zeta_n)) >= (phi_{n-1}, xi - zeta_n)  for 0 <= xi <= 1.
+   * With "Model = none" there is no damage field at all (zeta = 1 in the
+   * laws).
+   */
+  template <int dim>
+  class DamageModel
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool
+    is_active() const;
+
+    /// kappa >= 0 [m^2/s].
+    double
+    diffusion() const;
+
+    const DamageSource<dim> &
+    source() const;
+
+    /// zeta_0(x), with values in [0, 1] (checked where it is used).
+    const Function<dim> &
+    initial_damage() const;
+
+    unsigned int
+    max_iterations() const;
+
+    std::string
+    description() const;
+
+  private:
+    bool                                 active = false;
+    double                               kappa  = 0.01;
+    std::string                          source_expression;
+    std::unique_ptr<DamageSource<dim>>   damage_source;
+    std::unique_ptr<FunctionParser<dim>> initial;
+    unsigned int                         iteration_cap = 50;
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,89 @@
+// The primal-dual active set for the damage bounds [0, 1].
+#include <vpcontact/damage_bounds.h>
+
+#include <deal.II/base/mpi.h>
+
+namespace VPContact
+{
+  BoundStatus
+  box_decision(const double lambda, const double zeta, const double c)
+  {
+    if (lambda + c * (zeta - 1.) > 0.)
+      return BoundStatus::upper;
+    if (lambda + c * zeta < 0.)
+      return BoundStatus::lower;
+    return BoundStatus::free;
+  }
+
+
+
+  void
+  DamageBounds::setup(const IndexSet                      &damage_dofs,
+                      const IndexSet                      &locally_owned_dofs,
+                      const TrilinosWrappers::MPI::Vector &lumped_mass,
+                      const MPI_Comm                       mpi_communicator)
+  {
+    communicator = mpi_communicator;
+    dofs.clear();
+    mass.clear();
+    owned.clear();
+    for (const auto dof : damage_dofs)
+      {
+        dofs.push_back(dof);
+        mass.push_back(lumped_mass(dof));
+        owned.push_back(locally_owned_dofs.is_element(dof));
+      }
+    status.assign(dofs.size(), BoundStatus::free);
+  }
+
+
+
+  void
+  DamageBounds::add_constraints(AffineConstraints<double> &constraints) const
+  {
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (status[i] != BoundStatus::free
+          && !constraints.is_constrained(dofs[i]))
+        {
+          constraints.add_line(dofs[i]);
+          if (status[i] == BoundStatus::upper)
+            constraints.set_inhomogeneity(dofs[i], 1.);
+        }
+  }
+
+
+
+  unsigned int
+  DamageBounds::update(const TrilinosWrappers::MPI::Vector &residual,
+                       const TrilinosWrappers::MPI::Vector &damage,
+                       const double                         time_step)
+  {
+    unsigned int n_changed = 0;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        const BoundStatus next = box_decision(residual(dofs[i]),
+                                              damage(dofs[i]),
+                                              mass[i] / time_step);
+        if (owned[i] && next != status[i])
+          ++n_changed;
+        status[i] = next;
+      }
+    return Utilities::MPI::sum(n_changed, communicator);
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  DamageBounds::count() const
+  {
+    unsigned int n_lower = 0, n_upper = 0;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i])
+        {
+          n_lower += (status[i] == BoundStatus::lower);
+          n_upper += (status[i] == BoundStatus::upper);
+        }
+    return {Utilities::MPI::sum(n_lower, communicator),
+            Utilities::MPI::sum(n_upper, communicator)};
+  }
+} // namespace VPContact

@@ -1,0 +1,138 @@
+// The section "Damage".
+#include <vpcontact/damage_model.h>
+#include <vpcontact/input_error.h>
+#include <vpcontact/parsed_function.h>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  DamageModel<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Damage");
+    {
+      prm.declare_entry("Model",
+                        "none",
+                        Patterns::Selection("none|gradient"),
+                        "'none': no damage field (zeta = 1 in the laws). "
+                        "'gradient': the damage zeta in [0, 1] of the "
+                        "paper's law (2), a Q1 field solved with its bounds "
+                        "by a primal-dual active set method.");
+      prm.declare_entry("Diffusion",
+                        "0.01",
+                        Patterns::Double(0),
+                        "Damage diffusion kappa >= 0 [m^2/s].");
+      prm.declare_entry("Source",
+                        "lambda_w - 0.5*lambda_E*eps_eps",
+                        Patterns::Anything(),
+                        "The damage source phi [1/s], an expression in zeta, "
+                        "the strain (eps_xx, eps_yy, eps_xy, ...), the "
+                        "stress (sigma_xx, ...), eps_eps = eps:eps, energy = "
+                        "sigma:eps/2, von_mises, x, y (z), t and the "
+                        "constants below. Evaluated with the state of the "
+                        "previous step.");
+      prm.declare_entry("Function constants",
+                        "lambda_w:0.5, lambda_E:100",
+                        Patterns::Map(Patterns::Anything(), Patterns::Double()),
+                        "Named constants for 'Source' and 'Initial damage', "
+                        "as name:value pairs.");
+      prm.declare_entry("Initial damage",
+                        "1",
+                        Patterns::Anything(),
+                        "zeta_0(x, y (, z)), with values in [0, 1]; 1 is sound "
+                        "material.");
+      prm.declare_entry("Maximum active set iterations",
+                        "50",
+                        Patterns::Integer(1, 10000),
+                        "The bound iteration of one step stops the run with "
+                        "a message if the active sets still change after "
+                        "this many iterations.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  DamageModel<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Damage");
+    active               = (prm.get("Model") == "gradient");
+    kappa                = prm.get_double("Diffusion");
+    iteration_cap        = prm.get_integer("Maximum active set iterations");
+    source_expression    = prm.get("Source");
+    const auto constants = parse_function_constants(prm, "Function constants");
+    damage_source = std::make_unique<DamageSource<dim>>(source_expression,
+                                                        constants,
+                                                        "Damage/Source");
+    initial       = parse_function_entry<dim>(prm,
+                                        "Damage",
+                                        "Initial damage",
+                                        1,
+                                        constants);
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  bool
+  DamageModel<dim>::is_active() const
+  {
+    return active;
+  }
+
+
+
+  template <int dim>
+  double
+  DamageModel<dim>::diffusion() const
+  {
+    return kappa;
+  }
+
+
+
+  template <int dim>
+  const DamageSource<dim> &
+  DamageModel<dim>::source() const
+  {
+    return *damage_source;
+  }
+
+
+
+  template <int dim>
+  const Function<dim> &
+  DamageModel<dim>::initial_damage() const
+  {
+    return *initial;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageModel<dim>::max_iterations() const
+  {
+    return iteration_cap;
+  }
+
+
+
+  template <int dim>
+  std::string
+  DamageModel<dim>::description() const
+  {
+    if (!active)
+      return "none";
+    return "gradient, kappa = " + to_text(kappa)
+           + ", phi = " + source_expression;
+  }
+
+
+
+  template class DamageModel<2>;
+  template class DamageModel<3>;
+} // namespace VPContact

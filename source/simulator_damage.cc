@@ -1,0 +1,399 @@
+// The simulator's damage field: its degrees of freedom, the obstacle problem
+// of step 4 of the scheme with its bounds, and the damage statistics.
+#include <vpcontact/input_error.h>
+#include <vpcontact/simulator.h>
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+
+namespace VPContact
+{
+  template <int dim>
+  IndexSet
+  Simulator<dim>::relevant_dofs_of_components(const unsigned int first,
+                                              const unsigned int last) const
+  {
+    // The degrees of freedom of components [first, last) on every cell this
+    // rank sees, i.e. the locally relevant ones of those components.
+    IndexSet                             dofs(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              const unsigned int c = fe.system_to_component_index(i).first;
+              if (c >= first && c < last)
+                dofs.add_index(dof_indices[i]);
+            }
+        }
+    dofs.compress();
+    return dofs;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_damage()
+  {
+    TimerOutput::Scope t(computing_timer, "Setup");
+    damage_dofs = relevant_dofs_of_components(dim, dim + 1);
+
+    // The sparsity pattern of M/k + kappa A without the bounds: every
+    // displacement dof is constrained, so its rows hold only the diagonal.
+    // Bound constraints later remove entries, never add them.
+    make_damage_constraints();
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    damage_constraints,
+                                    false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    damage_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
+    damage_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    damage_owned.reinit(locally_owned_dofs, mpi_communicator);
+    damage.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    damage_residual_assembly.reinit(locally_owned_dofs,
+                                    locally_relevant_dofs,
+                                    mpi_communicator,
+                                    true);
+    damage_residual.reinit(locally_owned_dofs,
+                           locally_relevant_dofs,
+                           mpi_communicator);
+
+    // The lumped mass m_i = int psi_i: the mass matrix integrated with the
+    // Gauss-Lobatto (trapezoidal) rule, which is diagonal for Q1.
+    const QGaussLobatto<dim> lobatto(2);
+    FEValues<dim> fe_values(fe, lobatto, update_values | update_JxW_values);
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    TrilinosWrappers::MPI::Vector        mass;
+    mass.reinit(locally_owned_dofs,
+                locally_relevant_dofs,
+                mpi_communicator,
+                true);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            if (fe.system_to_component_index(i).first == dim)
+              for (const unsigned int q : fe_values.quadrature_point_indices())
+                mass(dof_indices[i])
+                  += fe_values.shape_value(i, q) * fe_values.JxW(q);
+        }
+    mass.compress(VectorOperation::add);
+    lumped_mass.reinit(locally_owned_dofs,
+                       locally_relevant_dofs,
+                       mpi_communicator);
+    lumped_mass = mass;
+    damage_bounds.setup(damage_dofs,
+                        locally_owned_dofs,
+                        lumped_mass,
+                        mpi_communicator);
+
+    // zeta_0, checked against the bounds at every node.
+    const Functions::ZeroFunction<dim>          zero(fe.n_components());
+    VectorFunctionFromScalarFunctionObject<dim> initial(
+      [&](const Point<dim> &p) {
+        return damage_model.initial_damage().value(p);
+      },
+      dim,
+      fe.n_components());
+    ComponentMask damage_mask(fe.n_components(), false);
+    damage_mask.set(dim, true);
+    VectorTools::interpolate(dof_handler, initial, damage_owned, damage_mask);
+    double lowest = 1, highest = 0;
+    for (const auto dof : damage_dofs)
+      if (locally_owned_dofs.is_element(dof))
+        {
+          const double value = damage_owned(dof);
+          lowest             = std::min(lowest, value);
+          highest            = std::max(highest, value);
+        }
+    lowest  = Utilities::MPI::min(lowest, mpi_communicator);
+    highest = Utilities::MPI::max(highest, mpi_communicator);
+    VPContactCheckParameter(lowest >= 0 && highest <= 1,
+                            "Damage/Initial damage",
+                            "[" + to_text(lowest) + ", " + to_text(highest)
+                              + "] (range at the nodes)",
+                            "the damage must lie in [0, 1] (1 is sound).");
+    solution_owned += damage_owned;
+    solution = solution_owned;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_damage_constraints()
+  {
+    // Only the damage is unknown here: every displacement dof is held (at
+    // zero in this auxiliary vector), hanging nodes as usual, and the nodes
+    // of the active sets at their bound.
+    damage_constraints.clear();
+    damage_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, damage_constraints);
+    for (const auto dof : relevant_dofs_of_components(0, dim))
+      if (!damage_constraints.is_constrained(dof))
+        damage_constraints.add_line(dof);
+    damage_bounds.add_constraints(damage_constraints);
+    damage_constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_damage(const bool residual_only)
+  {
+    TimerOutput::Scope t(computing_timer, "Damage assembly");
+
+    // K = M_L/k + kappa A and b = M_L zeta_{n-1}/k + (phi_{n-1}, psi), with
+    // the lumped mass M_L (Gauss-Lobatto points, where psi_i psi_j vanishes
+    // for i != j) and the source stored at the Gauss points by
+    // assemble_rhs(). With residual_only, r = b - K zeta of the current
+    // damage, uncondensed (the multipliers of the bounds), instead.
+    const double                     k     = time_discretization.step_size();
+    const double                     kappa = damage_model.diffusion();
+    const QGaussLobatto<dim>         lobatto(2);
+    FEValues<dim>                    fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients
+                              | update_JxW_values);
+    FEValues<dim>                    lobatto_values(fe,
+                                 lobatto,
+                                 update_values | update_JxW_values);
+    const FEValuesExtractors::Scalar zeta(dim);
+    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
+    Vector<double>                   cell_rhs(dofs_per_cell);
+    Vector<double>                   cell_damage(dofs_per_cell);
+    Vector<double>                   cell_k_zeta(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    std::vector<double>                  old_damage(lobatto.size());
+
+    if (residual_only)
+      damage_residual_assembly = 0.;
+    else
+      {
+        damage_matrix = 0.;
+        damage_rhs    = 0.;
+      }
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_matrix = 0.;
+          cell_rhs    = 0.;
+          fe_values.reinit(cell);
+          lobatto_values.reinit(cell);
+          lobatto_values[zeta].get_function_values(solution, old_damage);
+          const auto history = stress_history.get_data(cell);
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            if (fe.system_to_component_index(i).first == dim)
+              {
+                for (const unsigned int q :
+                     lobatto_values.quadrature_point_indices())
+                  {
+                    const double psi_i = lobatto_values[zeta].value(i, q);
+                    cell_rhs(i)
+                      += psi_i * old_damage[q] / k * lobatto_values.JxW(q);
+                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                      cell_matrix(i, j) += psi_i
+                                           * lobatto_values[zeta].value(j, q)
+                                           / k * lobatto_values.JxW(q);
+                  }
+                for (const unsigned int q :
+                     fe_values.quadrature_point_indices())
+                  {
+                    cell_rhs(i) += history[q]->damage_source
+                                   * fe_values[zeta].value(i, q)
+                                   * fe_values.JxW(q);
+                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                      cell_matrix(i, j)
+                        += kappa * fe_values[zeta].gradient(i, q)
+                           * fe_values[zeta].gradient(j, q) * fe_values.JxW(q);
+                  }
+              }
+
+          cell->get_dof_indices(dof_indices);
+          if (residual_only)
+            {
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                cell_damage(j) = damage(dof_indices[j]);
+              cell_matrix.vmult(cell_k_zeta, cell_damage);
+              cell_rhs -= cell_k_zeta;
+              damage_residual_assembly.add(dof_indices, cell_rhs);
+            }
+          else
+            damage_constraints.distribute_local_to_global(cell_matrix,
+                                                          cell_rhs,
+                                                          dof_indices,
+                                                          damage_matrix,
+                                                          damage_rhs);
+        }
+    if (residual_only)
+      {
+        damage_residual_assembly.compress(VectorOperation::add);
+        damage_residual = damage_residual_assembly;
+      }
+    else
+      {
+        damage_matrix.compress(VectorOperation::add);
+        damage_rhs.compress(VectorOperation::add);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_damage(const unsigned int n)
+  {
+    // The primal-dual active set for 0 <= zeta <= 1, warm-started from the
+    // sets of the previous step: solve with the nodes of the active sets at
+    // their bound, recompute the multipliers from the residual, take the
+    // next sets, until no node changes.
+    last_damage_iterations = 0;
+    for (unsigned int iteration = 1;; ++iteration)
+      {
+        make_damage_constraints();
+        assemble_damage(false);
+        {
+          TimerOutput::Scope t(computing_timer, "Damage solve");
+          // Constant modes on every component: the displacement rows of
+          // this system are decoupled (held), and ML needs a near-null
+          // space that does not vanish on them (it would form empty
+          // aggregates and return NaN).
+          std::vector<std::vector<bool>> constant_modes;
+          DoFTools::extract_constant_modes(dof_handler,
+                                           ComponentMask(fe.n_components(),
+                                                         true),
+                                           constant_modes);
+          damage_solver.initialize(damage_matrix, constant_modes);
+          damage_solver.solve(damage_matrix, damage_owned, damage_rhs);
+          damage_constraints.distribute(damage_owned);
+        }
+        damage                 = damage_owned;
+        last_damage_iterations = iteration;
+
+        assemble_damage(true);
+        const unsigned int n_changed
+          = damage_bounds.update(damage_residual,
+                                 damage,
+                                 time_discretization.step_size());
+        if (n_changed == 0)
+          break;
+        AssertThrow(iteration < damage_model.max_iterations(),
+                    ExcMessage(
+                      "Step " + std::to_string(n)
+                      + ": the active set of the damage bounds did not "
+                        "converge: after "
+                      + std::to_string(iteration) + " iterations "
+                      + std::to_string(n_changed)
+                      + " node(s) still change set. Raise Damage/Maximum "
+                        "active set iterations = "
+                      + std::to_string(damage_model.max_iterations())
+                      + "; on strongly stretched cells (aspect ratio above "
+                        "about 1.4) the lumped matrix is not an M-matrix and "
+                        "the iteration need not be monotone. The output up to "
+                        "step "
+                      + std::to_string(n - 1) + " is complete in "
+                      + output_writer.directory() + "."));
+      }
+
+    // Nodes between the bounds satisfy them up to the solver tolerance;
+    // clip them onto [0, 1] (the exact discrete solution lies there) and
+    // record by how much, then store zeta_n in the solution.
+    double clip = 0;
+    for (const auto dof : damage_dofs)
+      if (locally_owned_dofs.is_element(dof))
+        {
+          const double value   = damage_owned(dof);
+          const double clipped = std::clamp(value, 0., 1.);
+          AssertThrow(std::isfinite(value),
+                      ExcMessage("Step " + std::to_string(n)
+                                 + ": the damage is not finite. The output up "
+                                   "to the previous step is complete in "
+                                 + output_writer.directory() + "."));
+          clip                = std::max(clip, std::abs(value - clipped));
+          damage_owned(dof)   = clipped;
+          solution_owned(dof) = clipped;
+        }
+    damage_owned.compress(VectorOperation::insert);
+    solution_owned.compress(VectorOperation::insert);
+    last_damage_clip = Utilities::MPI::max(clip, mpi_communicator);
+    damage           = damage_owned;
+    solution         = solution_owned;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_damage_statistics(std::string &line)
+  {
+    // Nodal extremes, the bound violation (which must be exactly 0), and the
+    // volume fraction where zeta < 1 at the quadrature points.
+    double lowest = 1, highest = 0;
+    for (const auto dof : damage_dofs)
+      if (locally_owned_dofs.is_element(dof))
+        {
+          const double value = solution(dof);
+          lowest             = std::min(lowest, value);
+          highest            = std::max(highest, value);
+        }
+    lowest                 = Utilities::MPI::min(lowest, mpi_communicator);
+    highest                = Utilities::MPI::max(highest, mpi_communicator);
+    const double violation = std::max({0., -lowest, highest - 1.});
+
+    FEValues<dim> fe_values(fe, quadrature, update_values | update_JxW_values);
+    const FEValuesExtractors::Scalar zeta(dim);
+    std::vector<double>              values(quadrature.size());
+    double                           damaged = 0, volume = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[zeta].get_function_values(solution, values);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              volume += fe_values.JxW(q);
+              if (values[q] < 1. - 1e-12)
+                damaged += fe_values.JxW(q);
+            }
+        }
+    const double fraction = Utilities::MPI::sum(damaged, mpi_communicator)
+                            / Utilities::MPI::sum(volume, mpi_communicator);
+    max_damage_violation = std::max(max_damage_violation, violation);
+
+    statistics.add_value("damage_min", lowest);
+    statistics.add_value("damage_max", highest);
+    statistics.add_value("damaged_fraction", fraction);
+    statistics.add_value("damage_bound_violation", violation);
+    statistics.add_value("damage_clip", last_damage_clip);
+    statistics.add_value("damage_iterations", last_damage_iterations);
+    line += "  zeta in [" + to_text(std::round(lowest * 1e6) / 1e6) + ", "
+            + to_text(std::round(highest * 1e6) / 1e6) + "]  damaged "
+            + to_text(std::round(fraction * 1e4) / 1e2) + "%";
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace VPContact
