@@ -10,6 +10,64 @@
 
 namespace VPContact
 {
+  namespace
+  {
+    // The lumped length m_i = int_{Gamma_C} phi_i ds of every contact
+    // vertex, at its x-component dof, as a ghosted vector.
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    lumped_lengths(const DoFHandler<dim>              &dof_handler,
+                   const std::set<types::boundary_id> &contact_ids,
+                   const IndexSet                     &locally_relevant_dofs)
+    {
+      const auto     &fe           = dof_handler.get_fe();
+      const IndexSet &owned_dofs   = dof_handler.locally_owned_dofs();
+      const MPI_Comm  communicator = dof_handler.get_communicator();
+      const auto      on_contact   = [&](const auto &face) {
+        return face->at_boundary()
+               && contact_ids.count(face->boundary_id()) == 1;
+      };
+      // The lumped length m_i = int_{Gamma_C} phi_i ds (trapezoidal rule on
+      // each face), accumulated at the x-component dof of each vertex. The
+      // vector can write into ghost entries, which compress() sends to their
+      // owners.
+      TrilinosWrappers::MPI::Vector lengths;
+      lengths.reinit(owned_dofs, locally_relevant_dofs, communicator, true);
+      const QGauss<dim - 1>                face_quadrature(2);
+      FEFaceValues<dim>                    fe_face_values(fe,
+                                       face_quadrature,
+                                       update_values | update_JxW_values);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (on_contact(face))
+              {
+                fe_face_values.reinit(cell, face);
+                cell->get_dof_indices(dof_indices);
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  if (fe.system_to_component_index(i).first == 0)
+                    {
+                      double integral = 0;
+                      for (const unsigned int q :
+                           fe_face_values.quadrature_point_indices())
+                        integral += fe_face_values.shape_value(i, q)
+                                    * fe_face_values.JxW(q);
+                      if (integral != 0.)
+                        lengths(dof_indices[i]) += integral;
+                    }
+              }
+      lengths.compress(VectorOperation::add);
+      TrilinosWrappers::MPI::Vector relevant_lengths(owned_dofs,
+                                                     locally_relevant_dofs,
+                                                     communicator);
+      relevant_lengths = lengths;
+      return relevant_lengths;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   FrictionActiveSet<dim>::setup(
@@ -20,47 +78,13 @@ namespace VPContact
   {
     communicator = dof_handler.get_communicator();
     nodes.clear();
-    const auto     &fe         = dof_handler.get_fe();
     const IndexSet &owned_dofs = dof_handler.locally_owned_dofs();
     const auto      on_contact = [&](const auto &face) {
       return face->at_boundary() && contact_ids.count(face->boundary_id()) == 1;
     };
 
-    // The lumped length m_i = int_{Gamma_C} phi_i ds (trapezoidal rule on
-    // each face), accumulated at the x-component dof of each vertex. The
-    // vector can write into ghost entries, which compress() sends to their
-    // owners.
-    TrilinosWrappers::MPI::Vector lengths;
-    lengths.reinit(owned_dofs, locally_relevant_dofs, communicator, true);
-    const QGauss<dim - 1>                face_quadrature(2);
-    FEFaceValues<dim>                    fe_face_values(fe,
-                                     face_quadrature,
-                                     update_values | update_JxW_values);
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &face : cell->face_iterators())
-          if (on_contact(face))
-            {
-              fe_face_values.reinit(cell, face);
-              cell->get_dof_indices(dof_indices);
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                if (fe.system_to_component_index(i).first == 0)
-                  {
-                    double integral = 0;
-                    for (const unsigned int q :
-                         fe_face_values.quadrature_point_indices())
-                      integral += fe_face_values.shape_value(i, q)
-                                  * fe_face_values.JxW(q);
-                    if (integral != 0.)
-                      lengths(dof_indices[i]) += integral;
-                  }
-            }
-    lengths.compress(VectorOperation::add);
-    TrilinosWrappers::MPI::Vector relevant_lengths(owned_dofs,
-                                                   locally_relevant_dofs,
-                                                   communicator);
-    relevant_lengths = lengths;
+    const TrilinosWrappers::MPI::Vector relevant_lengths
+      = lumped_lengths(dof_handler, contact_ids, locally_relevant_dofs);
 
     // The nodes, on every cell this rank sees (owned or ghost).
     std::set<types::global_dof_index> seen;

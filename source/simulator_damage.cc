@@ -14,6 +14,54 @@
 
 namespace VPContact
 {
+  namespace
+  {
+    // The element matrix M_L/k + kappa A and vector M_L zeta_{n-1}/k +
+    // (phi_{n-1}, psi) of the damage problem on one cell: the mass with the
+    // Gauss-Lobatto rule (lumped), the rest with the Gauss rule of the
+    // stored source. Rows of displacement shape functions stay zero.
+    template <int dim>
+    void
+    damage_cell_system(
+      const FEValues<dim>       &fe_values,
+      const FEValues<dim>       &lobatto_values,
+      const std::vector<double> &old_damage,
+      const std::vector<std::shared_ptr<QuadraturePointHistory<dim>>> &history,
+      const double                                                     k,
+      const double                                                     kappa,
+      FullMatrix<double> &cell_matrix,
+      Vector<double>     &cell_rhs)
+    {
+      const FEValuesExtractors::Scalar zeta(dim);
+      const FiniteElement<dim>        &fe = fe_values.get_fe();
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        if (fe.system_to_component_index(i).first == dim)
+          {
+            for (const unsigned int q :
+                 lobatto_values.quadrature_point_indices())
+              {
+                const double psi_i = lobatto_values[zeta].value(i, q);
+                cell_rhs(i)
+                  += psi_i * old_damage[q] / k * lobatto_values.JxW(q);
+                for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                  cell_matrix(i, j) += psi_i * lobatto_values[zeta].value(j, q)
+                                       / k * lobatto_values.JxW(q);
+              }
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                cell_rhs(i) += history[q]->damage_source
+                               * fe_values[zeta].value(i, q) * fe_values.JxW(q);
+                for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                  cell_matrix(i, j) += kappa * fe_values[zeta].gradient(i, q)
+                                       * fe_values[zeta].gradient(j, q)
+                                       * fe_values.JxW(q);
+              }
+          }
+    }
+  } // namespace
+
+
+
   template <int dim>
   IndexSet
   Simulator<dim>::relevant_dofs_of_components(const unsigned int first,
@@ -106,8 +154,16 @@ namespace VPContact
                         lumped_mass,
                         mpi_communicator);
 
+    interpolate_initial_damage();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::interpolate_initial_damage()
+  {
     // zeta_0, checked against the bounds at every node.
-    const Functions::ZeroFunction<dim>          zero(fe.n_components());
     VectorFunctionFromScalarFunctionObject<dim> initial(
       [&](const Point<dim> &p) {
         return damage_model.initial_damage().value(p);
@@ -202,33 +258,14 @@ namespace VPContact
           fe_values.reinit(cell);
           lobatto_values.reinit(cell);
           lobatto_values[zeta].get_function_values(solution, old_damage);
-          const auto history = stress_history.get_data(cell);
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            if (fe.system_to_component_index(i).first == dim)
-              {
-                for (const unsigned int q :
-                     lobatto_values.quadrature_point_indices())
-                  {
-                    const double psi_i = lobatto_values[zeta].value(i, q);
-                    cell_rhs(i)
-                      += psi_i * old_damage[q] / k * lobatto_values.JxW(q);
-                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                      cell_matrix(i, j) += psi_i
-                                           * lobatto_values[zeta].value(j, q)
-                                           / k * lobatto_values.JxW(q);
-                  }
-                for (const unsigned int q :
-                     fe_values.quadrature_point_indices())
-                  {
-                    cell_rhs(i) += history[q]->damage_source
-                                   * fe_values[zeta].value(i, q)
-                                   * fe_values.JxW(q);
-                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                      cell_matrix(i, j)
-                        += kappa * fe_values[zeta].gradient(i, q)
-                           * fe_values[zeta].gradient(j, q) * fe_values.JxW(q);
-                  }
-              }
+          damage_cell_system(fe_values,
+                             lobatto_values,
+                             old_damage,
+                             stress_history.get_data(cell),
+                             k,
+                             kappa,
+                             cell_matrix,
+                             cell_rhs);
 
           cell->get_dof_indices(dof_indices);
           if (residual_only)

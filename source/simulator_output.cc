@@ -166,23 +166,7 @@ namespace VPContact
           }
       }
     if (friction_active)
-      {
-        const auto [n_stick, n_slip] = friction_active_set.count();
-        const double utilisation     = friction_active_set.max_utilisation();
-        // Relative to the largest g; slip counts where |w_i| exceeds 1e-8 of
-        // the largest tangential increment.
-        const double violation = friction_active_set.max_violation(1e-8);
-        statistics.add_value("active_set_iterations",
-                             last_active_set_iterations);
-        statistics.add_value("stick_nodes", n_stick);
-        statistics.add_value("slip_nodes", n_slip);
-        statistics.add_value("friction_utilisation", utilisation);
-        statistics.add_value("friction_violation", violation);
-        max_friction_violation = std::max(max_friction_violation, violation);
-        line += "  stick/slip = " + std::to_string(n_stick) + "/"
-                + std::to_string(n_slip)
-                + "  max|sigma_t|/g = " + format("%.4f", utilisation);
-      }
+      add_friction_statistics(line);
     if (!output_writer.deterministic_screen_output() && n > 0)
       line += "  CG its = " + std::to_string(last_linear_iterations)
               + (friction_active ?
@@ -194,6 +178,28 @@ namespace VPContact
     if (output_writer.writes_fields_at(n, time_discretization.n_steps()))
       write_fields(n, von_mises, components);
     output_writer.write_statistics(statistics, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_friction_statistics(std::string &line)
+  {
+    const auto [n_stick, n_slip] = friction_active_set.count();
+    const double utilisation     = friction_active_set.max_utilisation();
+    // Relative to the largest g; slip counts where |w_i| exceeds 1e-8 of
+    // the largest tangential increment.
+    const double violation = friction_active_set.max_violation(1e-8);
+    statistics.add_value("active_set_iterations", last_active_set_iterations);
+    statistics.add_value("stick_nodes", n_stick);
+    statistics.add_value("slip_nodes", n_slip);
+    statistics.add_value("friction_utilisation", utilisation);
+    statistics.add_value("friction_violation", violation);
+    max_friction_violation = std::max(max_friction_violation, violation);
+    line += "  stick/slip = " + std::to_string(n_stick) + "/"
+            + std::to_string(n_slip)
+            + "  max|sigma_t|/g = " + format("%.4f", utilisation);
   }
 
 

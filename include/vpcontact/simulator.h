@@ -135,6 +135,8 @@ namespace VPContact
     void
     setup_damage();
     void
+    interpolate_initial_damage();
+    void
     make_damage_constraints();
     void
     assemble_damage(const bool residual_only);
@@ -148,6 +150,8 @@ namespace VPContact
     print_header() const;
     void
     postprocess_step(const unsigned int n, const double step_wall_time);
+    void
+    add_friction_statistics(std::string &line);
     void
     write_fields(const unsigned int                 n,
                  const Vector<double>              &von_mises,
