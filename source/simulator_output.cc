@@ -127,6 +127,35 @@ namespace VPContact
                        + "  |u|max = " + format("%.6e", u_max)
                        + "  von Mises max = " + format("%.6e", von_mises_max)
                        + "  energy = " + format("%.6e", energy);
+    if (damage_model.is_active())
+      add_damage_statistics(line);
+    add_verification_statistics(line, time, u_max, components);
+    if (friction_active)
+      add_friction_statistics(line);
+    if (!output_writer.deterministic_screen_output() && n > 0)
+      line += "  CG its = " + std::to_string(last_linear_iterations)
+              + (friction_active ?
+                   "  AS its = " + std::to_string(last_active_set_iterations) :
+                   "")
+              + format("  (%.3f s)", step_wall_time);
+    pcout << line << std::endl;
+
+    if (output_writer.writes_fields_at(n, time_discretization.n_steps()))
+      write_fields(n, von_mises, components);
+    output_writer.write_statistics(statistics, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_verification_statistics(
+    std::string                       &line,
+    const double                       time,
+    const double                       u_max,
+    const std::vector<Vector<double>> &components)
+  {
+    // The errors against the closed forms of the Verification section.
     if (verification.is_active())
       {
         const auto errors
@@ -152,32 +181,13 @@ namespace VPContact
         statistics.add_value("stress_error_max", error);
         line += "  stress error = " + format("%.2e", error);
       }
-    if (damage_model.is_active())
+    if (verification.has_exact_damage())
       {
-        add_damage_statistics(line);
-        if (verification.has_exact_damage())
-          {
-            const double error = verification.damage_error(dof_handler,
-                                                           solution,
-                                                           damage_dofs,
-                                                           time);
-            statistics.add_value("damage_error_max", error);
-            line += "  damage error = " + format("%.2e", error);
-          }
+        const double error
+          = verification.damage_error(dof_handler, solution, damage_dofs, time);
+        statistics.add_value("damage_error_max", error);
+        line += "  damage error = " + format("%.2e", error);
       }
-    if (friction_active)
-      add_friction_statistics(line);
-    if (!output_writer.deterministic_screen_output() && n > 0)
-      line += "  CG its = " + std::to_string(last_linear_iterations)
-              + (friction_active ?
-                   "  AS its = " + std::to_string(last_active_set_iterations) :
-                   "")
-              + format("  (%.3f s)", step_wall_time);
-    pcout << line << std::endl;
-
-    if (output_writer.writes_fields_at(n, time_discretization.n_steps()))
-      write_fields(n, von_mises, components);
-    output_writer.write_statistics(statistics, mpi_communicator);
   }
 
 

@@ -153,6 +153,11 @@ namespace VPContact
     void
     add_friction_statistics(std::string &line);
     void
+    add_verification_statistics(std::string                       &line,
+                                const double                       time,
+                                const double                       u_max,
+                                const std::vector<Vector<double>> &components);
+    void
     write_fields(const unsigned int                 n,
                  const Vector<double>              &von_mises,
                  const std::vector<Vector<double>> &components);
