@@ -1,0 +1,168 @@
+#!/usr/bin/python3
+"""Figures of the paper scene from vpcontact's own output (run by
+scripts/figures): the paper's Figs. 2-4 (deformed mesh with the initial
+outline, von Mises norm and damage at the final time), the contact status
+along the base for paper_fig1_slip, and time histories from statistics.csv.
+
+Usage: plot_figures.py RESULTS_FOLDER FIGURE_FOLDER
+Needs Debian's python3-matplotlib and python3-vtk9 (/usr/bin/python3)."""
+import csv
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import vtk
+from matplotlib.collections import PolyCollection
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def time_series(folder):
+    """(time, .pvtu path) of every output in folder/solution.pvd."""
+    root = ET.parse(os.path.join(folder, "solution.pvd")).getroot()
+    return [(float(d.get("timestep")), os.path.join(folder, d.get("file")))
+            for d in root.iter("DataSet")]
+
+
+def read(pvtu):
+    """Quads (n x 4 x 2 reference coordinates), point arrays by name."""
+    reader = vtk.vtkXMLPUnstructuredGridReader()
+    reader.SetFileName(pvtu)
+    reader.Update()
+    grid = reader.GetOutput()
+    points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
+    cells = vtk_to_numpy(grid.GetCells().GetData()).reshape(-1, 5)[:, 1:]
+    data = grid.GetPointData()
+    arrays = {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
+              for i in range(data.GetNumberOfArrays())}
+    return points, cells, arrays
+
+
+def statistics(folder):
+    with open(os.path.join(folder, "statistics.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) if r[k] else np.nan for r in rows])
+            for k in rows[0]}
+
+
+def deformed(points, arrays):
+    return points + arrays["displacement"][:, :2]
+
+
+def save(fig, path):
+    fig.savefig(path, dpi=130, bbox_inches="tight")
+    plt.close(fig)
+    print("wrote", path)
+
+
+def paper_figures(folder, out):
+    t, pvtu = time_series(folder)[-1]
+    points, cells, arrays = read(pvtu)
+    x = deformed(points, arrays)
+
+    # Fig. 2: deformed mesh at the final time and the initial configuration.
+    fig, ax = plt.subplots(figsize=(6, 5))
+    ax.add_collection(PolyCollection(x[cells], facecolors="none",
+                                     edgecolors="k", linewidths=0.3))
+    ax.plot([0, 1, 1, 0, 0], [0, 0, 1, 1, 0], "r--", lw=1.2,
+            label="initial configuration")
+    ax.set_aspect("equal")
+    ax.autoscale()
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12))
+    ax.set_title(f"Deformed mesh at t = {t:g} s (true scale)")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    save(fig, os.path.join(out, "paper_fig1_deformed.png"))
+
+    # Fig. 3: von Mises norm of the stress (cell averages) on the deformed body.
+    fig, ax = plt.subplots(figsize=(6.4, 5))
+    values = arrays["von_mises"][cells[:, 0]]
+    patches = PolyCollection(x[cells], array=values, cmap="viridis",
+                             edgecolors="face", linewidths=0.2)
+    ax.add_collection(patches)
+    fig.colorbar(patches, ax=ax, label="von Mises norm [N/m$^2$]")
+    ax.set_aspect("equal")
+    ax.autoscale()
+    ax.set_title(f"Von Mises stress norm at t = {t:g} s")
+    save(fig, os.path.join(out, "paper_fig1_von_mises.png"))
+
+    # Fig. 4: damage field (Q1, nodal values) on the deformed body.
+    fig, ax = plt.subplots(figsize=(6.4, 5))
+    triangles = np.vstack([cells[:, [0, 1, 2]], cells[:, [0, 2, 3]]])
+    shading = ax.tripcolor(x[:, 0], x[:, 1], triangles, arrays["damage"],
+                           shading="gouraud", cmap="inferno", vmin=0, vmax=1)
+    fig.colorbar(shading, ax=ax, label="damage $\\zeta$ (1 sound, 0 broken)")
+    ax.set_aspect("equal")
+    ax.set_title(f"Damage at t = {t:g} s")
+    save(fig, os.path.join(out, "paper_fig1_damage.png"))
+
+    # Time histories.
+    s = statistics(folder)
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
+    axes[0].plot(s["time"], s["von_mises_max"])
+    axes[0].set_ylabel("max von Mises [N/m$^2$]")
+    axes[1].plot(s["time"], s["damage_min"], label="min $\\zeta$")
+    axes[1].plot(s["time"], 1 - s["damaged_fraction"],
+                 label="sound fraction ($\\zeta$ = 1)")
+    axes[1].set_ylim(-0.05, 1.05)
+    axes[1].legend()
+    axes[2].plot(s["time"], s["friction_utilisation"])
+    axes[2].set_ylabel("max $|\\sigma_\\tau|/g$")
+    for a in axes:
+        a.set_xlabel("t [s]")
+        a.grid(alpha=0.3)
+    fig.suptitle("paper_fig1: time histories from statistics.csv")
+    save(fig, os.path.join(out, "paper_fig1_history.png"))
+
+
+def slip_figures(folder, out, g=20.0):
+    series = time_series(folder)
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    shown = series[1::3]
+    if shown[-1] != series[-1]:
+        shown.append(series[-1])
+    for t, pvtu in shown:
+        points, cells, arrays = read(pvtu)
+        base = np.isclose(points[:, 1], 0.0)
+        x = points[base, 0]
+        status = arrays["contact_status"][base]
+        traction = arrays["tangential_traction"][base]
+        order = np.argsort(x)
+        x, status, traction = x[order], status[order], traction[order]
+        keep = status > 0
+        line, = ax.plot(x[keep], traction[keep], "-", lw=1, label=f"t = {t:g}")
+        ax.plot(x[status == 1], traction[status == 1], "o", ms=3,
+                color=line.get_color())
+        ax.plot(x[status == 2], traction[status == 2], "x", ms=5,
+                color=line.get_color())
+    ax.axhline(g, color="k", ls=":", lw=1)
+    ax.axhline(-g, color="k", ls=":", lw=1, label="$\\pm g$")
+    ax.set_xlabel("x along the base [m]")
+    ax.set_ylabel("tangential traction $\\sigma_\\tau$ [N/m$^2$]")
+    ax.set_title("paper_fig1_slip: contact status along the base "
+                 "(o stick, x slip)")
+    ax.legend(fontsize=8, ncol=2)
+    ax.grid(alpha=0.3)
+    save(fig, os.path.join(out, "paper_fig1_slip_contact.png"))
+
+    s = statistics(folder)
+    fig, ax = plt.subplots(figsize=(6, 3.6))
+    ax.plot(s["time"], s["stick_nodes"], label="stick nodes")
+    ax.plot(s["time"], s["slip_nodes"], label="slip nodes")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("contact nodes")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    ax.set_title("paper_fig1_slip: stick and slip nodes")
+    save(fig, os.path.join(out, "paper_fig1_slip_history.png"))
+
+
+if __name__ == "__main__":
+    results, figures = sys.argv[1], sys.argv[2]
+    os.makedirs(figures, exist_ok=True)
+    paper_figures(os.path.join(results, "paper_fig1"), figures)
+    slip_figures(os.path.join(results, "paper_fig1_slip"), figures)
