@@ -101,6 +101,8 @@ namespace VPContact
     // The forward Euler step of sigma_dot = G(sigma) amplifies an error by
     // 1 - k L_G for a law with Lipschitz constant L_G; beyond k = 2 / L_G it
     // grows without bound. Refuse such a step before computing anything.
+    if (viscoplasticity.implicit())
+      return; // backward Euler is stable for any step
     const double k     = time_discretization.step_size();
     const double limit = viscoplastic_law->explicit_step_limit();
     VPContactCheckParameter(
@@ -113,7 +115,8 @@ namespace VPContact
         + " (2 / Lipschitz constant of G; for Maxwell 2 eta). "
           "Choose Time step <= "
         + to_text(limit)
-        + ", or a slower law (larger Viscoplasticity/Relaxation time).");
+        + ", a slower law (larger Viscoplasticity/Relaxation time), or "
+          "Viscoplasticity/Time integration = implicit.");
   }
 
 
@@ -174,7 +177,10 @@ namespace VPContact
     // Steps 1-3 of the scheme (predictor, displacement, stress), then step
     // 4 (damage), which uses only data of step n-1: the source phi_{n-1}
     // stored by the assembly of step 2, and zeta_{n-1}.
-    solve_increment(time_discretization.time(n), true);
+    if (viscoplasticity.implicit())
+      solve_increment_implicit(time_discretization.time(n));
+    else
+      solve_increment(time_discretization.time(n), true);
     update_stress(n);
     if (damage_model.is_active())
       solve_damage(n);

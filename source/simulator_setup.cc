@@ -27,6 +27,15 @@ namespace VPContact
                                  times);
         // g = 0 everywhere is frictionless sliding: no active set at all.
         friction_active = (g_max > 0);
+        AssertThrow(!(friction_active && viscoplasticity.implicit()),
+                    ExcMessage(
+                      "Viscoplasticity/Time integration = implicit is not "
+                      "combined with Tresca friction in this release (the "
+                      "friction bound is up to "
+                      + to_text(g_max)
+                      + "). Use the explicit step with a Time step within its "
+                        "stability limit, or a frictionless contact "
+                        "(Contact/Friction bound = 0)."));
         AssertThrow(dim == 2 || !friction_active,
                     ExcMessage(
                       "Contact/Friction bound: Tresca friction is implemented "
@@ -94,6 +103,7 @@ namespace VPContact
                     locally_relevant_dofs,
                     mpi_communicator);
     increment_owned.reinit(locally_owned_dofs, mpi_communicator);
+    newton_update.reinit(locally_owned_dofs, mpi_communicator);
     increment.reinit(locally_owned_dofs,
                      locally_relevant_dofs,
                      mpi_communicator);

@@ -19,9 +19,16 @@ namespace VPContact
 
     FEValues<dim>                        fe_values(fe,
                             quadrature,
-                            update_gradients | update_JxW_values);
+                            update_values | update_gradients
+                              | update_JxW_values);
     const FEValuesExtractors::Vector     u(0);
+    const FEValuesExtractors::Scalar     zeta(dim);
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
+    std::vector<double>                  damage_values(quadrature.size(), 1.);
+    // Backward Euler solves for the stress again from sigma_{n-1}, with the
+    // strain of u_n and the damage zeta_{n-1} (still in the solution).
+    const bool implicit = viscoplasticity.implicit() && n > 0;
 
     // The largest stress component, to catch an explicit step that has
     // blown up; NaN compares false and is turned into infinity.
@@ -32,12 +39,27 @@ namespace VPContact
           fe_values.reinit(cell);
           fe_values[u].get_function_symmetric_gradients(increment,
                                                         strain_increments);
+          if (implicit)
+            fe_values[u].get_function_symmetric_gradients(solution, strains);
+          if (implicit && damage_model.is_active())
+            fe_values[zeta].get_function_values(solution, damage_values);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               auto &point = *history[q];
-              point.stress
-                = point.predictor + material.stress(strain_increments[q]);
+              if (implicit)
+                point.stress
+                  = implicit_stress_update(
+                      *viscoplastic_law,
+                      point.stress + material.stress(strain_increments[q]),
+                      strains[q],
+                      damage_values[q],
+                      time_discretization.step_size(),
+                      material.stiffness())
+                      .stress;
+              else
+                point.stress
+                  = point.predictor + material.stress(strain_increments[q]);
               for (unsigned int c = 0;
                    c < SymmetricTensor<2, dim>::n_independent_components;
                    ++c)

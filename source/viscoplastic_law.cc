@@ -19,6 +19,69 @@ namespace VPContact
 
 
 
+  namespace
+  {
+    // d Phi_L / d sigma: the identity on the components inside [-L, L],
+    // zero on the clipped ones.
+    template <int dim>
+    SymmetricTensor<4, dim>
+    truncation_derivative(const SymmetricTensor<2, dim> &tau, const double L)
+    {
+      SymmetricTensor<4, dim> D = identity_tensor<dim>();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          if (std::abs(tau[i][j]) > L)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int l = k; l < dim; ++l)
+                D[i][j][k][l] = 0.;
+      return D;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  ImplicitStress<dim>
+  implicit_stress_update(const ViscoplasticLaw<dim>    &law,
+                         const SymmetricTensor<2, dim> &trial,
+                         const SymmetricTensor<2, dim> &strain,
+                         const double                   damage,
+                         const double                   k,
+                         const SymmetricTensor<4, dim> &stiffness)
+  {
+    // Newton for R(sigma) = sigma - k G(sigma) - trial = 0 with the
+    // Jacobian J = I - k dG/dsigma; for the laws here G is piecewise linear
+    // in sigma and Newton ends in one or two steps.
+    constexpr unsigned int max_iterations = 50;
+    const double           tolerance      = 1e-12 * (trial.norm() + 1e-300);
+    ImplicitStress<dim>    result;
+    result.stress = trial;
+    for (; result.iterations < max_iterations; ++result.iterations)
+      {
+        const SymmetricTensor<2, dim> residual
+          = result.stress - k * law.rate(result.stress, strain, damage) - trial;
+        if (residual.norm() <= tolerance)
+          break;
+        const SymmetricTensor<4, dim> jacobian
+          = identity_tensor<dim>()
+            - k * law.rate_derivative(result.stress, strain, damage);
+        result.stress -= invert(jacobian) * residual;
+      }
+    AssertThrow(result.iterations < max_iterations,
+                ExcMessage("The implicit viscoplastic stress update (local "
+                           "Newton at a quadrature point, law: "
+                           + law.description()
+                           + ") did not converge in 50 iterations. Reduce "
+                             "Time/Time step or use the explicit step."));
+    result.tangent
+      = invert(identity_tensor<dim>()
+               - k * law.rate_derivative(result.stress, strain, damage))
+        * stiffness;
+    return result;
+  }
+
+
+
   template <int dim>
   double
   ViscoplasticLaw<dim>::explicit_step_limit() const
@@ -44,6 +107,17 @@ namespace VPContact
                                const double) const
   {
     return SymmetricTensor<2, dim>();
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  NoViscoplasticity<dim>::rate_derivative(const SymmetricTensor<2, dim> &,
+                                          const SymmetricTensor<2, dim> &,
+                                          const double) const
+  {
+    return SymmetricTensor<4, dim>();
   }
 
 
@@ -85,6 +159,18 @@ namespace VPContact
 
 
   template <int dim>
+  SymmetricTensor<4, dim>
+  DamageTruncatedLaw<dim>::rate_derivative(
+    const SymmetricTensor<2, dim> &stress,
+    const SymmetricTensor<2, dim> &,
+    const double damage) const
+  {
+    return -(1. - damage) * truncation_derivative(stress, L);
+  }
+
+
+
+  template <int dim>
   double
   DamageTruncatedLaw<dim>::explicit_step_limit() const
   {
@@ -121,6 +207,19 @@ namespace VPContact
     if (L == std::numeric_limits<double>::infinity())
       return -stress / eta;
     return -truncate(stress, L) / eta;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  MaxwellLaw<dim>::rate_derivative(const SymmetricTensor<2, dim> &stress,
+                                   const SymmetricTensor<2, dim> &,
+                                   const double) const
+  {
+    if (L == std::numeric_limits<double>::infinity())
+      return -identity_tensor<dim>() / eta;
+    return -truncation_derivative(stress, L) / eta;
   }
 
 
@@ -171,6 +270,16 @@ namespace VPContact
                         Patterns::Double(0),
                         "eta of the Maxwell law [s]. Must be positive. The "
                         "explicit step is stable only for Time step <= 2 eta.");
+      prm.declare_entry(
+        "Time integration",
+        "explicit",
+        Patterns::Selection("explicit|implicit"),
+        "'explicit': forward Euler in G, the paper's scheme (14); stable only "
+        "for Time step <= 2 / Lipschitz constant of G (Maxwell: 2 eta), and "
+        "refused beyond. 'implicit': backward Euler in G with a local Newton "
+        "solve at each quadrature point and a global Newton iteration; "
+        "stable for any step (first order), for fast relaxation (small eta). "
+        "Not combined with Tresca friction in this release.");
       prm.declare_entry("Divergence limit",
                         "1e6",
                         Patterns::Double(0),
@@ -199,6 +308,7 @@ namespace VPContact
     relaxation_time   = prm.get_double("Relaxation time");
     truncate_maxwell  = prm.get_bool("Truncate Maxwell");
     divergence_factor = prm.get_double("Divergence limit");
+    implicit_step     = (prm.get("Time integration") == "implicit");
     prm.leave_subsection();
     VPContactCheckParameter(divergence_factor > 0,
                             "Viscoplasticity/Divergence limit",
@@ -246,6 +356,29 @@ namespace VPContact
 
 
 
+  template <int dim>
+  bool
+  ViscoplasticityParameters<dim>::implicit() const
+  {
+    return implicit_step;
+  }
+
+
+
+  template ImplicitStress<2>
+  implicit_stress_update(const ViscoplasticLaw<2> &,
+                         const SymmetricTensor<2, 2> &,
+                         const SymmetricTensor<2, 2> &,
+                         const double,
+                         const double,
+                         const SymmetricTensor<4, 2> &);
+  template ImplicitStress<3>
+  implicit_stress_update(const ViscoplasticLaw<3> &,
+                         const SymmetricTensor<2, 3> &,
+                         const SymmetricTensor<2, 3> &,
+                         const double,
+                         const double,
+                         const SymmetricTensor<4, 3> &);
   template SymmetricTensor<2, 2>
   truncate(const SymmetricTensor<2, 2> &, const double);
   template SymmetricTensor<2, 3>

@@ -48,6 +48,7 @@ namespace VPContact
    *   quadrature point storage;
    * - simulator_assembly.cc: the stiffness matrix (once per mesh) and the
    *   right-hand side of a step;
+   * - simulator_implicit.cc: the backward Euler alternative to step 1-3;
    * - simulator_stress.cc: the stress update and its safeguards;
    * - simulator_damage.cc: the damage field and its obstacle problem;
    * - simulator_output.cc: statistics, screen and field output.
@@ -116,6 +117,12 @@ namespace VPContact
                    const FEValues<dim> &fe_values,
                    FEFaceValues<dim>   &fe_face_values,
                    Vector<double>      &cell_vector) const;
+
+    // simulator_implicit.cc
+    void
+    assemble_implicit_system(const double time);
+    void
+    solve_increment_implicit(const double time);
 
     // simulator_stress.cc
     void
@@ -205,6 +212,8 @@ namespace VPContact
     /// du = u_n - u_{n-1}: owned part (the solver's vector), ghosted copy.
     TrilinosWrappers::MPI::Vector increment_owned;
     TrilinosWrappers::MPI::Vector increment;
+    /// A Newton correction of the implicit step (owned).
+    TrilinosWrappers::MPI::Vector newton_update;
 
     /// r = b - A(du), uncondensed, for the friction multipliers: a vector
     /// that assembly writes (with ghost entries), and a ghosted copy.

@@ -40,6 +40,15 @@ namespace VPContact
          const double                   damage) const = 0;
 
     /**
+     * dG/dsigma at (sigma, eps, zeta), for the implicit (backward Euler)
+     * step: the Jacobian of its local Newton solve and its tangent.
+     */
+    virtual SymmetricTensor<4, dim>
+    rate_derivative(const SymmetricTensor<2, dim> &stress,
+                    const SymmetricTensor<2, dim> &strain,
+                    const double                   damage) const = 0;
+
+    /**
      * The largest time step for which the explicit step is stable, where
      * the law knows it (for G = -sigma/eta the amplification factor of one
      * step is 1 - k/eta, so k <= 2 eta); infinity where no limit is known.
@@ -68,6 +77,11 @@ namespace VPContact
          const SymmetricTensor<2, dim> &strain,
          const double                   damage) const override;
 
+    SymmetricTensor<4, dim>
+    rate_derivative(const SymmetricTensor<2, dim> &stress,
+                    const SymmetricTensor<2, dim> &strain,
+                    const double                   damage) const override;
+
     bool
     is_zero() const override;
 
@@ -92,6 +106,11 @@ namespace VPContact
     rate(const SymmetricTensor<2, dim> &stress,
          const SymmetricTensor<2, dim> &strain,
          const double                   damage) const override;
+
+    SymmetricTensor<4, dim>
+    rate_derivative(const SymmetricTensor<2, dim> &stress,
+                    const SymmetricTensor<2, dim> &strain,
+                    const double                   damage) const override;
 
     double
     explicit_step_limit() const override;
@@ -121,6 +140,11 @@ namespace VPContact
          const SymmetricTensor<2, dim> &strain,
          const double                   damage) const override;
 
+    SymmetricTensor<4, dim>
+    rate_derivative(const SymmetricTensor<2, dim> &stress,
+                    const SymmetricTensor<2, dim> &strain,
+                    const double                   damage) const override;
+
     double
     explicit_step_limit() const override;
 
@@ -133,6 +157,32 @@ namespace VPContact
   };
 
 
+
+  /// The result of the implicit stress update at one quadrature point.
+  template <int dim>
+  struct ImplicitStress
+  {
+    SymmetricTensor<2, dim> stress;
+    /// d sigma_n / d eps(du) = (I - k dG/dsigma)^{-1} E.
+    SymmetricTensor<4, dim> tangent;
+    unsigned int            iterations = 0;
+  };
+
+  /**
+   * The backward Euler step of sigma_dot = E eps(u_dot) + G: solve
+   *   sigma - k G(sigma, eps, zeta) = trial,  trial = sigma_{n-1} + E eps(du),
+   * by Newton's method at one quadrature point, starting from the trial
+   * stress. Throws if it does not converge in 50 iterations (to 1e-12 of
+   * the trial stress).
+   */
+  template <int dim>
+  ImplicitStress<dim>
+  implicit_stress_update(const ViscoplasticLaw<dim>    &law,
+                         const SymmetricTensor<2, dim> &trial,
+                         const SymmetricTensor<2, dim> &strain,
+                         const double                   damage,
+                         const double                   time_step,
+                         const SymmetricTensor<4, dim> &stiffness);
 
   /**
    * Section "Viscoplasticity": which law, and its parameters. Adding a law
@@ -159,7 +209,12 @@ namespace VPContact
     double
     divergence_limit() const;
 
+    /// Whether G is treated by backward Euler (else forward Euler).
+    bool
+    implicit() const;
+
   private:
+    bool        implicit_step     = false;
     double      divergence_factor = 1e6;
     std::string law_name          = "none";
     double      truncation        = 1000;
