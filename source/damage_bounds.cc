@@ -6,11 +6,21 @@
 namespace VPContact
 {
   BoundStatus
-  box_decision(const double lambda, const double zeta, const double c)
+  box_decision(const double      lambda,
+               const double      zeta,
+               const double      c,
+               const BoundStatus current,
+               const double      tolerance)
   {
-    if (lambda + c * (zeta - 1.) > 0.)
+    // Entering a set needs the test to hold by more than the tolerance;
+    // staying in it, only not to fail by more than the tolerance.
+    const double upper_margin
+      = (current == BoundStatus::upper ? -tolerance : tolerance);
+    const double lower_margin
+      = (current == BoundStatus::lower ? -tolerance : tolerance);
+    if (lambda + c * (zeta - 1.) > upper_margin)
       return BoundStatus::upper;
-    if (lambda + c * zeta < 0.)
+    if (lambda + c * zeta < -lower_margin)
       return BoundStatus::lower;
     return BoundStatus::free;
   }
@@ -39,15 +49,18 @@ namespace VPContact
 
 
   void
-  DamageBounds::add_constraints(AffineConstraints<double> &constraints) const
+  DamageBounds::add_constraints(
+    AffineConstraints<double>           &constraints,
+    const TrilinosWrappers::MPI::Vector &old_damage) const
   {
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (status[i] != BoundStatus::free
           && !constraints.is_constrained(dofs[i]))
         {
           constraints.add_line(dofs[i]);
-          if (status[i] == BoundStatus::upper)
-            constraints.set_inhomogeneity(dofs[i], 1.);
+          constraints.set_inhomogeneity(
+            dofs[i],
+            (status[i] == BoundStatus::upper ? 1. : 0.) - old_damage(dofs[i]));
         }
   }
 
@@ -61,9 +74,14 @@ namespace VPContact
     unsigned int n_changed = 0;
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
-        const BoundStatus next = box_decision(residual(dofs[i]),
+        // Weakly active nodes: a hysteresis of 1e-9 in units of zeta.
+        constexpr double  hysteresis = 1e-9;
+        const double      c          = mass[i] / time_step;
+        const BoundStatus next       = box_decision(residual(dofs[i]),
                                               damage(dofs[i]),
-                                              mass[i] / time_step);
+                                              c,
+                                              status[i],
+                                              hysteresis * c);
         if (owned[i] && next != status[i])
           ++n_changed;
         status[i] = next;

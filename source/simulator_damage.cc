@@ -114,6 +114,7 @@ namespace VPContact
                          mpi_communicator);
     damage_rhs.reinit(locally_owned_dofs, mpi_communicator);
     damage_owned.reinit(locally_owned_dofs, mpi_communicator);
+    damage_change.reinit(locally_owned_dofs, mpi_communicator);
     damage.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
     damage_residual_assembly.reinit(locally_owned_dofs,
                                     locally_relevant_dofs,
@@ -207,7 +208,7 @@ namespace VPContact
     for (const auto dof : relevant_dofs_of_components(0, dim))
       if (!damage_constraints.is_constrained(dof))
         damage_constraints.add_line(dof);
-    damage_bounds.add_constraints(damage_constraints);
+    damage_bounds.add_constraints(damage_constraints, solution);
     damage_constraints.close();
   }
 
@@ -277,11 +278,18 @@ namespace VPContact
               damage_residual_assembly.add(dof_indices, cell_rhs);
             }
           else
-            damage_constraints.distribute_local_to_global(cell_matrix,
-                                                          cell_rhs,
-                                                          dof_indices,
-                                                          damage_matrix,
-                                                          damage_rhs);
+            {
+              // The system for the change: b - K zeta_{n-1}.
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                cell_damage(j) = solution(dof_indices[j]);
+              cell_matrix.vmult(cell_k_zeta, cell_damage);
+              cell_rhs -= cell_k_zeta;
+              damage_constraints.distribute_local_to_global(cell_matrix,
+                                                            cell_rhs,
+                                                            dof_indices,
+                                                            damage_matrix,
+                                                            damage_rhs);
+            }
         }
     if (residual_only)
       {
@@ -304,8 +312,12 @@ namespace VPContact
     // The primal-dual active set for 0 <= zeta <= 1, warm-started from the
     // sets of the previous step: solve with the nodes of the active sets at
     // their bound, recompute the multipliers from the residual, take the
-    // next sets, until no node changes.
+    // next sets, until no node changes. The unknown of the linear solves is
+    // the change zeta - zeta_{n-1}: its right-hand side F - kappa A
+    // zeta_{n-1} is small where little happens, so the relative tolerance
+    // of CG measures what changes, not the mass term M zeta_{n-1}/k.
     last_damage_iterations = 0;
+    damage_change          = 0.;
     for (unsigned int iteration = 1;; ++iteration)
       {
         make_damage_constraints();
@@ -322,9 +334,13 @@ namespace VPContact
                                                          true),
                                            constant_modes);
           damage_solver.initialize(damage_matrix, constant_modes);
-          damage_solver.solve(damage_matrix, damage_owned, damage_rhs);
-          damage_constraints.distribute(damage_owned);
+          damage_solver.solve(damage_matrix, damage_change, damage_rhs);
+          damage_constraints.distribute(damage_change);
         }
+        // zeta = zeta_{n-1} + change on the damage dofs (the displacement
+        // entries of these vectors are not used).
+        damage_owned = solution_owned;
+        damage_owned += damage_change;
         damage                 = damage_owned;
         last_damage_iterations = iteration;
 

@@ -31,9 +31,18 @@ namespace VPContact
    *   lambda = max(0, lambda + c (zeta - 1)) + min(0, lambda + c zeta),
    * whose semismooth Newton step is: upper where lambda + c (zeta - 1) > 0,
    * lower where lambda + c zeta < 0, free elsewhere.
+   *
+   * A node whose multiplier is zero at the bound (weakly active) would flip
+   * between two sets on round-off alone; with @p tolerance > 0 a node
+   * leaves its @p current set only if the test is violated by more than
+   * @p tolerance (in units of lambda), which ends such cycles.
    */
   BoundStatus
-  box_decision(const double lambda, const double zeta, const double c);
+  box_decision(const double      lambda,
+               const double      zeta,
+               const double      c,
+               const BoundStatus current   = BoundStatus::free,
+               const double      tolerance = 0.);
 
   /**
    * The active sets of the damage bounds on the locally relevant damage
@@ -55,14 +64,21 @@ namespace VPContact
           const TrilinosWrappers::MPI::Vector &lumped_mass,
           const MPI_Comm                       communicator);
 
-    /// zeta_i = 0 on the lower set, zeta_i = 1 on the upper set.
+    /**
+     * Constraints on the damage change zeta - zeta_old: zeta_i = 0 on the
+     * lower set, zeta_i = 1 on the upper set, with zeta_old the damage
+     * entries of the ghosted @p old_damage.
+     */
     void
-    add_constraints(AffineConstraints<double> &constraints) const;
+    add_constraints(AffineConstraints<double>           &constraints,
+                    const TrilinosWrappers::MPI::Vector &old_damage) const;
 
     /**
      * The next sets from the ghosted @p residual and @p damage, with
-     * c = m_i / k (the diagonal of M/k). Returns the number of nodes that
-     * changed set, on all ranks.
+     * c = m_i / k (the diagonal of M/k) and the hysteresis tolerance
+     * 1e-9 c (a change of the damage of 1e-9, far below anything the
+     * model resolves). Returns the number of nodes that changed set, on all
+     * ranks.
      */
     unsigned int
     update(const TrilinosWrappers::MPI::Vector &residual,

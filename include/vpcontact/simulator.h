@@ -231,14 +231,16 @@ namespace VPContact
     TrilinosWrappers::SparseMatrix damage_matrix;
     TrilinosWrappers::MPI::Vector  damage_rhs;
     TrilinosWrappers::MPI::Vector  damage_owned;
-    TrilinosWrappers::MPI::Vector  damage;
-    TrilinosWrappers::MPI::Vector  damage_residual_assembly;
-    TrilinosWrappers::MPI::Vector  damage_residual;
-    TrilinosWrappers::MPI::Vector  lumped_mass;
-    LinearSolver                   damage_solver;
-    unsigned int                   last_damage_iterations = 0;
-    double                         last_damage_clip       = 0;
-    double                         max_damage_violation   = 0;
+    /// zeta_n - zeta_{n-1}, the unknown of the damage solves (owned).
+    TrilinosWrappers::MPI::Vector damage_change;
+    TrilinosWrappers::MPI::Vector damage;
+    TrilinosWrappers::MPI::Vector damage_residual_assembly;
+    TrilinosWrappers::MPI::Vector damage_residual;
+    TrilinosWrappers::MPI::Vector lumped_mass;
+    LinearSolver                  damage_solver;
+    unsigned int                  last_damage_iterations = 0;
+    double                        last_damage_clip       = 0;
+    double                        max_damage_violation   = 0;
 
     Statistics   statistics;
     unsigned int last_linear_iterations     = 0;
