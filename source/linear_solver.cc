@@ -137,4 +137,20 @@ namespace VPContact
   {
     return solver_method;
   }
+
+
+
+  double
+  LinearSolver::tolerance() const
+  {
+    return relative_tolerance;
+  }
+
+
+
+  unsigned int
+  LinearSolver::iteration_limit() const
+  {
+    return max_iterations;
+  }
 } // namespace VPContact

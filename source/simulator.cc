@@ -86,7 +86,6 @@ namespace VPContact
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
-    damage_solver.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
     check_stability_limits();
@@ -192,16 +191,8 @@ namespace VPContact
   void
   Simulator<dim>::initialize_linear_solver()
   {
-    TimerOutput::Scope             t(computing_timer, "Build preconditioner");
-    std::vector<std::vector<bool>> constant_modes;
-    // One constant mode per component, the damage included: in the
-    // displacement system the damage rows are decoupled (held at zero), and
-    // a near-null-space vector that vanishes on them leaves ML with empty
-    // aggregates there.
-    DoFTools::extract_constant_modes(dof_handler,
-                                     ComponentMask(fe.n_components(), true),
-                                     constant_modes);
-    linear_solver.initialize(stiffness_matrix, constant_modes);
+    TimerOutput::Scope t(computing_timer, "Build preconditioner");
+    linear_solver.initialize(stiffness_matrix, all_constant_modes);
   }
 
 

@@ -7,10 +7,13 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <functional>
 
 namespace VPContact
 {
@@ -116,10 +119,12 @@ namespace VPContact
     damage_owned.reinit(locally_owned_dofs, mpi_communicator);
     damage_change.reinit(locally_owned_dofs, mpi_communicator);
     damage.reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
-    damage_residual_assembly.reinit(locally_owned_dofs,
-                                    locally_relevant_dofs,
-                                    mpi_communicator,
-                                    true);
+    damage_load_assembly.reinit(locally_owned_dofs,
+                                locally_relevant_dofs,
+                                mpi_communicator,
+                                true);
+    damage_load.reinit(locally_owned_dofs, mpi_communicator);
+    damage_residual_owned.reinit(locally_owned_dofs, mpi_communicator);
     damage_residual.reinit(locally_owned_dofs,
                            locally_relevant_dofs,
                            mpi_communicator);
@@ -155,7 +160,19 @@ namespace VPContact
                         lumped_mass,
                         mpi_communicator);
 
+    AssertThrow(!triangulation.has_hanging_nodes(),
+                ExcMessage("The damage solver works on meshes without hanging "
+                           "nodes (uniform refinement) in this release."));
     interpolate_initial_damage();
+
+    // K = M_L/k + kappa A does not change while the mesh and k do: it is
+    // assembled and its AMG built once. The bounds are applied by masking
+    // (see solve_damage()), not by reassembly.
+    assemble_damage(true);
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic       = true;
+    data.constant_modes = all_constant_modes;
+    damage_amg.initialize(damage_matrix, data);
   }
 
 
@@ -216,15 +233,15 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::assemble_damage(const bool residual_only)
+  Simulator<dim>::assemble_damage(const bool matrix)
   {
     TimerOutput::Scope t(computing_timer, "Damage assembly");
 
-    // K = M_L/k + kappa A and b = M_L zeta_{n-1}/k + (phi_{n-1}, psi), with
-    // the lumped mass M_L (Gauss-Lobatto points, where psi_i psi_j vanishes
-    // for i != j) and the source stored at the Gauss points by
-    // assemble_rhs(). With residual_only, r = b - K zeta of the current
-    // damage, uncondensed (the multipliers of the bounds), instead.
+    // K = M_L/k + kappa A (with matrix) or b = M_L zeta_{n-1}/k +
+    // (phi_{n-1}, psi) (without): the lumped mass M_L (Gauss-Lobatto
+    // points, where psi_i psi_j vanishes for i != j), and the source stored
+    // at the Gauss points by assemble_rhs(). The matrix holds every
+    // displacement dof (the constraints without bounds); b is uncondensed.
     const double                     k     = time_discretization.step_size();
     const double                     kappa = damage_model.diffusion();
     const QGaussLobatto<dim>         lobatto(2);
@@ -239,18 +256,13 @@ namespace VPContact
     const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
     FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
     Vector<double>                   cell_rhs(dofs_per_cell);
-    Vector<double>                   cell_damage(dofs_per_cell);
-    Vector<double>                   cell_k_zeta(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    std::vector<double>                  old_damage(lobatto.size());
+    std::vector<double>                  old_damage(lobatto.size(), 1.);
 
-    if (residual_only)
-      damage_residual_assembly = 0.;
+    if (matrix)
+      damage_matrix = 0.;
     else
-      {
-        damage_matrix = 0.;
-        damage_rhs    = 0.;
-      }
+      damage_load_assembly = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -258,7 +270,8 @@ namespace VPContact
           cell_rhs    = 0.;
           fe_values.reinit(cell);
           lobatto_values.reinit(cell);
-          lobatto_values[zeta].get_function_values(solution, old_damage);
+          if (!matrix)
+            lobatto_values[zeta].get_function_values(solution, old_damage);
           damage_cell_system(fe_values,
                              lobatto_values,
                              old_damage,
@@ -267,39 +280,94 @@ namespace VPContact
                              kappa,
                              cell_matrix,
                              cell_rhs);
-
           cell->get_dof_indices(dof_indices);
-          if (residual_only)
-            {
-              for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                cell_damage(j) = damage(dof_indices[j]);
-              cell_matrix.vmult(cell_k_zeta, cell_damage);
-              cell_rhs -= cell_k_zeta;
-              damage_residual_assembly.add(dof_indices, cell_rhs);
-            }
+          if (matrix)
+            damage_constraints.distribute_local_to_global(cell_matrix,
+                                                          dof_indices,
+                                                          damage_matrix);
           else
-            {
-              // The system for the change: b - K zeta_{n-1}.
-              for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                cell_damage(j) = solution(dof_indices[j]);
-              cell_matrix.vmult(cell_k_zeta, cell_damage);
-              cell_rhs -= cell_k_zeta;
-              damage_constraints.distribute_local_to_global(cell_matrix,
-                                                            cell_rhs,
-                                                            dof_indices,
-                                                            damage_matrix,
-                                                            damage_rhs);
-            }
+            damage_load_assembly.add(dof_indices, cell_rhs);
         }
-    if (residual_only)
-      {
-        damage_residual_assembly.compress(VectorOperation::add);
-        damage_residual = damage_residual_assembly;
-      }
+    if (matrix)
+      damage_matrix.compress(VectorOperation::add);
     else
       {
-        damage_matrix.compress(VectorOperation::add);
-        damage_rhs.compress(VectorOperation::add);
+        damage_load_assembly.compress(VectorOperation::add);
+        damage_load = damage_load_assembly;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_masked_damage_system(
+    const std::vector<types::global_dof_index> &held)
+  {
+    TimerOutput::Scope t(computing_timer, "Damage solve");
+
+    // CG on x -> P K P x + (I - P) x, with P zeroing the held entries: the
+    // system of the free nodes, with the identity on the held ones, so that
+    // neither K nor its AMG has to be rebuilt when the sets change. The
+    // preconditioner is masked alike: P AMG(K) P + (I - P).
+    struct Masked
+    {
+      std::function<void(TrilinosWrappers::MPI::Vector &,
+                         const TrilinosWrappers::MPI::Vector &)>
+                                                  apply;
+      const std::vector<types::global_dof_index> &held;
+      mutable TrilinosWrappers::MPI::Vector       tmp;
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        tmp = src;
+        for (const auto dof : held)
+          tmp(dof) = 0.;
+        tmp.compress(VectorOperation::insert);
+        apply(dst, tmp);
+        for (const auto dof : held)
+          dst(dof) = src(dof);
+        dst.compress(VectorOperation::insert);
+      }
+    };
+    const Masked operator_on_free{[this](auto &dst, const auto &src) {
+                                    damage_matrix.vmult(dst, src);
+                                  },
+                                  held,
+                                  damage_rhs};
+    const Masked preconditioner_on_free{[this](auto &dst, const auto &src) {
+                                          damage_amg.vmult(dst, src);
+                                        },
+                                        held,
+                                        damage_rhs};
+
+    const double rhs_norm = damage_rhs.l2_norm();
+    if (rhs_norm == 0.)
+      {
+        damage_change = 0.;
+        return;
+      }
+    SolverControl control(linear_solver.iteration_limit(),
+                          linear_solver.tolerance() * rhs_norm);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    try
+      {
+        cg.solve(operator_on_free,
+                 damage_change,
+                 damage_rhs,
+                 preconditioner_on_free);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        AssertThrow(false,
+                    ExcMessage("CG did not converge for the damage: after "
+                               + std::to_string(e.last_step)
+                               + " iterations the residual is "
+                               + to_text(e.last_residual) + " > "
+                               + to_text(control.tolerance())
+                               + ". Raise Solver/Maximum linear iterations or "
+                                 "loosen Solver/Relative tolerance."));
       }
   }
 
@@ -318,33 +386,52 @@ namespace VPContact
     // of CG measures what changes, not the mass term M zeta_{n-1}/k.
     last_damage_iterations = 0;
     damage_change          = 0.;
+
+    // b and b - K zeta_{n-1} of this step, uncondensed (K is the same on
+    // the damage rows with or without the held displacement dofs).
+    assemble_damage(false);
+    TrilinosWrappers::MPI::Vector old_owned(damage_owned),
+      step_rhs(damage_owned), bound_change(damage_owned);
+    old_owned = solution;
+    damage_matrix.vmult(step_rhs, old_owned);
+    step_rhs.sadd(-1., 1., damage_load);
+
     for (unsigned int iteration = 1;; ++iteration)
       {
+        // The held nodes: every displacement dof, and the damage nodes at a
+        // bound (their change is prescribed).
         make_damage_constraints();
-        assemble_damage(false);
-        {
-          TimerOutput::Scope t(computing_timer, "Damage solve");
-          // Constant modes on every component: the displacement rows of
-          // this system are decoupled (held), and ML needs a near-null
-          // space that does not vanish on them (it would form empty
-          // aggregates and return NaN).
-          std::vector<std::vector<bool>> constant_modes;
-          DoFTools::extract_constant_modes(dof_handler,
-                                           ComponentMask(fe.n_components(),
-                                                         true),
-                                           constant_modes);
-          damage_solver.initialize(damage_matrix, constant_modes);
-          damage_solver.solve(damage_matrix, damage_change, damage_rhs);
-          damage_constraints.distribute(damage_change);
-        }
+        std::vector<types::global_dof_index> held;
+        bound_change = 0.;
+        for (const auto dof : locally_owned_dofs)
+          if (damage_constraints.is_constrained(dof))
+            {
+              held.push_back(dof);
+              bound_change(dof) = damage_constraints.get_inhomogeneity(dof);
+            }
+        bound_change.compress(VectorOperation::insert);
+
+        // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +
+        // bound_change))_F; the held rows of the right-hand side are zero.
+        damage_matrix.vmult(damage_rhs, bound_change);
+        damage_rhs.sadd(-1., 1., step_rhs);
+        for (const auto dof : held)
+          damage_rhs(dof) = 0.;
+        damage_rhs.compress(VectorOperation::insert);
+        solve_masked_damage_system(held);
+        damage_constraints.distribute(damage_change);
+
         // zeta = zeta_{n-1} + change on the damage dofs (the displacement
         // entries of these vectors are not used).
-        damage_owned = solution_owned;
+        damage_owned = old_owned;
         damage_owned += damage_change;
         damage                 = damage_owned;
         last_damage_iterations = iteration;
 
-        assemble_damage(true);
+        // The multipliers r = b - K zeta, uncondensed.
+        damage_matrix.vmult(damage_residual_owned, damage_owned);
+        damage_residual_owned.sadd(-1., 1., damage_load);
+        damage_residual = damage_residual_owned;
         const unsigned int n_changed
           = damage_bounds.update(damage_residual,
                                  damage,

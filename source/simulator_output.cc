@@ -271,6 +271,12 @@ namespace VPContact
             DataComponentInterpretation::component_is_scalar));
       }
     data_out.build_patches();
+    // deal.II compresses .vtu files as much as it can by default, which
+    // costs more than the rest of the output; fast compression is almost
+    // as small.
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
     output_writer.write_fields(data_out,
                                n,
                                time_discretization.time(n),

@@ -59,6 +59,13 @@ namespace VPContact
     dof_handler.distribute_dofs(fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    // One constant mode per component for ML, the damage included: in each
+    // of the two systems the rows of the other field are decoupled (held),
+    // and a near-null-space vector that vanishes on them leaves ML with
+    // empty aggregates there.
+    DoFTools::extract_constant_modes(dof_handler,
+                                     ComponentMask(fe.n_components(), true),
+                                     all_constant_modes);
 
     // The constraints at t = 0 have the structure of those of every step
     // (only inhomogeneities of prescribed displacements change), so the

@@ -62,6 +62,12 @@ namespace VPContact
     Method
     method() const;
 
+    double
+    tolerance() const;
+
+    unsigned int
+    iteration_limit() const;
+
   private:
     Method       solver_method      = Method::cg_amg;
     double       relative_tolerance = 1e-10;

@@ -146,9 +146,12 @@ namespace VPContact
     void
     make_damage_constraints();
     void
-    assemble_damage(const bool residual_only);
+    assemble_damage(const bool matrix);
     void
     solve_damage(const unsigned int n);
+    void
+    solve_masked_damage_system(
+      const std::vector<types::global_dof_index> &held);
     void
     add_damage_statistics(std::string &line);
 
@@ -222,6 +225,9 @@ namespace VPContact
 
     StressHistory<dim> stress_history;
 
+    /// One constant mode per component, for ML (computed once per mesh).
+    std::vector<std::vector<bool>> all_constant_modes;
+
     // The damage step (damage scenes only): its own constraints (every
     // displacement dof held, the active bounds), matrix and vectors on the
     // same DoFHandler, and its active set.
@@ -232,15 +238,17 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector  damage_rhs;
     TrilinosWrappers::MPI::Vector  damage_owned;
     /// zeta_n - zeta_{n-1}, the unknown of the damage solves (owned).
-    TrilinosWrappers::MPI::Vector damage_change;
-    TrilinosWrappers::MPI::Vector damage;
-    TrilinosWrappers::MPI::Vector damage_residual_assembly;
-    TrilinosWrappers::MPI::Vector damage_residual;
-    TrilinosWrappers::MPI::Vector lumped_mass;
-    LinearSolver                  damage_solver;
-    unsigned int                  last_damage_iterations = 0;
-    double                        last_damage_clip       = 0;
-    double                        max_damage_violation   = 0;
+    TrilinosWrappers::MPI::Vector     damage_change;
+    TrilinosWrappers::MPI::Vector     damage;
+    TrilinosWrappers::MPI::Vector     damage_load_assembly;
+    TrilinosWrappers::MPI::Vector     damage_load;
+    TrilinosWrappers::MPI::Vector     damage_residual_owned;
+    TrilinosWrappers::MPI::Vector     damage_residual;
+    TrilinosWrappers::MPI::Vector     lumped_mass;
+    TrilinosWrappers::PreconditionAMG damage_amg;
+    unsigned int                      last_damage_iterations = 0;
+    double                            last_damage_clip       = 0;
+    double                            max_damage_violation   = 0;
 
     Statistics   statistics;
     unsigned int last_linear_iterations     = 0;
