@@ -59,6 +59,12 @@ namespace VPContact
                         "depends only on the discrete solution and not on the "
                         "number of MPI ranks or the machine. The test suite "
                         "uses this.");
+      prm.declare_entry("Report solve floor",
+                        "false",
+                        Patterns::Bool(),
+                        "At the end, time one solve of the displacement "
+                        "system with everything reused and print it: the "
+                        "floor of a time step, for scripts/bench.");
     }
     prm.leave_subsection();
   }
@@ -73,6 +79,7 @@ namespace VPContact
     output_directory = prm.get("Directory");
     output_every     = prm.get_integer("Output every");
     deterministic    = prm.get_bool("Deterministic screen output");
+    solve_floor      = prm.get_bool("Report solve floor");
     prm.leave_subsection();
     VPContactCheckParameter(!output_directory.empty(),
                             "Output/Directory",
@@ -169,6 +176,15 @@ namespace VPContact
   OutputWriter<dim>::deterministic_screen_output() const
   {
     return deterministic;
+  }
+
+
+
+  template <int dim>
+  bool
+  OutputWriter<dim>::report_solve_floor() const
+  {
+    return solve_floor;
   }
 
 

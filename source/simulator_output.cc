@@ -8,6 +8,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <cstdio>
+#include <fstream>
 
 namespace VPContact
 {
@@ -309,6 +310,11 @@ namespace VPContact
       {
         pcout << " (folder " << output_writer.directory() << ")" << std::endl;
         computing_timer.print_summary();
+        // Peak resident memory of this rank (VmHWM), for the benchmarks.
+        std::ifstream status("/proc/self/status");
+        for (std::string line; std::getline(status, line);)
+          if (line.rfind("VmHWM:", 0) == 0)
+            pcout << "Peak memory (rank 0): " << line.substr(6) << std::endl;
       }
     pcout << std::endl;
   }

@@ -62,6 +62,10 @@ namespace VPContact
     bool
     deterministic_screen_output() const;
 
+    /// Whether to time one displacement solve at the end (benchmarks).
+    bool
+    report_solve_floor() const;
+
     const std::string &
     directory() const;
 
@@ -69,6 +73,7 @@ namespace VPContact
     std::string  output_directory = "results";
     unsigned int output_every     = 10;
     bool         deterministic    = false;
+    bool         solve_floor      = false;
 
     /// (time, .pvtu file) of every field output so far, for the .pvd record.
     std::vector<std::pair<double, std::string>> times_and_names;

@@ -93,6 +93,8 @@ namespace VPContact
     solve_increment(const double time, const bool with_viscoplastic_rate);
     void
     initialize_linear_solver();
+    void
+    report_solve_floor();
 
     // simulator_setup.cc
     void

@@ -1,0 +1,107 @@
+#!/usr/bin/python3
+"""Benchmark of the paper scene (prm/paper_fig1.prm: friction, damage,
+output every 10 steps, 100 steps) at several mesh sizes, serial and on 2
+MPI ranks at the largest size. Writes doc/performance.md with, per run:
+dofs, wall time, time per step split by phase (from the program's
+TimerOutput table), peak memory, and the floor measured in the same run (one
+displacement solve with everything reused) with the ratio step/floor.
+
+Usage: bench.py VPCONTACT [SIZE ...]   (from the repository root)"""
+import os
+import platform
+import re
+import subprocess
+import sys
+
+executable = sys.argv[1]
+sizes = [int(s) for s in sys.argv[2:]] or [64, 128, 256, 512]
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+           OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def run(size, ranks):
+    prm = f"/tmp/vpcontact_bench_{size}_{ranks}.prm"
+    with open(prm, "w") as f:
+        f.write(open("prm/paper_fig1.prm").read())
+        f.write(f"""
+subsection Geometry
+  set Subdivisions = {size}, {size}
+end
+subsection Output
+  set Directory          = results/bench_{size}_{ranks}
+  set Report solve floor = true
+end
+""")
+    command = ([executable, prm] if ranks == 1 else
+               ["mpirun", "-np", str(ranks), "--oversubscribe", executable, prm])
+    out = subprocess.run(command, capture_output=True, text=True, env=env,
+                         check=True).stdout
+    phases = {m.group(1).strip(): float(m.group(3)) for m in re.finditer(
+        r"\| ([A-Za-z -]+?)\s+\|\s+(\d+) \|\s+([0-9.e+-]+)s \|", out)}
+    total = float(re.search(r"Total wallclock time elapsed since start\s+\|\s+"
+                            r"([0-9.e+-]+)s", out).group(1))
+    floor = re.search(r"one displacement solve takes ([0-9.e+-]+) s \((\d+) CG"
+                      r" iterations, (\d+) dofs", out)
+    memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
+    return dict(size=size, ranks=ranks, total=total, phases=phases,
+                floor=float(floor.group(1)), floor_its=int(floor.group(2)),
+                dofs=int(floor.group(3)),
+                memory=int(memory.group(1)) / 1024 if memory else float("nan"))
+
+
+results = []
+for size in sizes:
+    results.append(run(size, 1))
+    print(f"{size}^2, 1 rank: {results[-1]['total']:.1f} s", flush=True)
+results.append(run(sizes[-1], 2))
+print(f"{sizes[-1]}^2, 2 ranks: {results[-1]['total']:.1f} s", flush=True)
+
+steps = 100
+groups = [("displacement: assembly", ["Assemble right-hand side",
+                                      "Assemble residual", "Assemble matrix",
+                                      "Build preconditioner"]),
+          ("displacement: solve", ["Solve"]),
+          ("stress update", ["Stress update"]),
+          ("damage: assembly", ["Damage assembly"]),
+          ("damage: solve", ["Damage solve"]),
+          ("output", ["Postprocess and output"])]
+with open("doc/performance.md", "w") as out:
+    out.write(f"""# Performance
+
+Measured by `scripts/bench` (this page is its output) on this machine:
+{platform.processor() or platform.machine()}, {os.cpu_count()} cores,
+Debian 12, deal.II 9.4 release build, Trilinos ML AMG. The scene is
+`prm/paper_fig1.prm` (friction, damage, paper's law, fields written every 10
+steps) with N x N cells and 100 steps. The **floor** is measured at the end
+of the same run: one solve of the displacement system with the matrix and
+AMG as they are and the last right-hand side, from a zero start vector (CG
+iterations in brackets). Times per step are wall-clock milliseconds averaged
+over the 100 steps; setup (mesh, dofs, first assembly and AMG) is in the
+total only.
+
+| cells | ranks | dofs | total [s] | per step [ms] | floor [ms] | step / floor | """ +
+              " | ".join(g for g, _ in groups) + """ | peak memory rank 0 [MB] |
+|---|---|---|---|---|---|---|""" + "---|" * len(groups) + "---|\n")
+    for r in results:
+        per_step = 1000 * sum(v for k, v in r["phases"].items()
+                              if k not in ("Setup",)) / steps
+        cells = [1000 * sum(r["phases"].get(k, 0) for k in keys) / steps
+                 for _, keys in groups]
+        out.write(f"| {r['size']}^2 | {r['ranks']} | {r['dofs']} | "
+                  f"{r['total']:.1f} | {per_step:.1f} | "
+                  f"{1000 * r['floor']:.1f} ({r['floor_its']}) | "
+                  f"{per_step / (1000 * r['floor']):.2f} | " +
+                  " | ".join(f"{c:.1f}" for c in cells) +
+                  f" | {r['memory']:.0f} |\n")
+    serial = [r for r in results if r["ranks"] == 1]
+    out.write("\nGrowth of the time per step per 4x dofs: ")
+    out.write(", ".join(
+        f"{a['size']}^2 -> {b['size']}^2: x {((sum(b['phases'].values()) - b['phases'].get('Setup', 0)) / (sum(a['phases'].values()) - a['phases'].get('Setup', 0))):.2f}"
+        for a, b in zip(serial, serial[1:])) + ".\n")
+    big1 = serial[-1]
+    big2 = results[-1]
+    out.write(f"\nStrong scaling at {big2['size']}^2: 1 rank {big1['total']:.1f} s, "
+              f"2 ranks {big2['total']:.1f} s, speed-up "
+              f"{big1['total'] / big2['total']:.2f}.\n")
+    out.write(open("doc/performance_notes.md").read())
+print("wrote doc/performance.md")
