@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 
 namespace VPContact
 {
@@ -456,6 +457,15 @@ namespace VPContact
                       + output_writer.directory() + "."));
       }
 
+    store_damage(n);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::store_damage(const unsigned int n)
+  {
     // Nodes between the bounds satisfy them up to the solver tolerance;
     // clip them onto [0, 1] (the exact discrete solution lies there) and
     // record by how much, then store zeta_n in the solution.
@@ -465,18 +475,24 @@ namespace VPContact
         {
           const double value   = damage_owned(dof);
           const double clipped = std::clamp(value, 0., 1.);
-          AssertThrow(std::isfinite(value),
-                      ExcMessage("Step " + std::to_string(n)
-                                 + ": the damage is not finite. The output up "
-                                   "to the previous step is complete in "
-                                 + output_writer.directory() + "."));
-          clip                = std::max(clip, std::abs(value - clipped));
+          // NaN compares false: the clip becomes infinite and is caught
+          // below, on every rank alike.
+          clip
+            = (std::abs(value - clipped) <= clip ? clip :
+               std::isfinite(value)              ? std::abs(value - clipped) :
+                                      std::numeric_limits<double>::infinity());
           damage_owned(dof)   = clipped;
           solution_owned(dof) = clipped;
         }
+    clip = Utilities::MPI::max(clip, mpi_communicator);
+    AssertThrow(std::isfinite(clip),
+                ExcMessage("Step " + std::to_string(n)
+                           + ": the damage is not finite. The output up to the "
+                             "previous step is complete in "
+                           + output_writer.directory() + "."));
     damage_owned.compress(VectorOperation::insert);
     solution_owned.compress(VectorOperation::insert);
-    last_damage_clip = Utilities::MPI::max(clip, mpi_communicator);
+    last_damage_clip = clip;
     damage           = damage_owned;
     solution         = solution_owned;
   }

@@ -152,6 +152,8 @@ namespace VPContact
     void
     solve_damage(const unsigned int n);
     void
+    store_damage(const unsigned int n);
+    void
     solve_masked_damage_system(
       const std::vector<types::global_dof_index> &held);
     void
