@@ -138,15 +138,9 @@ namespace VPContact
     const bool                       with_damage = damage_model.is_active();
     const FEValuesExtractors::Scalar zeta(dim);
     std::vector<double>              damage_values(quadrature.size(), 1.);
-    const QGauss<dim - 1>            face_quadrature(fe.degree + 1);
-    FEValues<dim>                    fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients
-                              | update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>                fe_face_values(fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points
-                                       | update_JxW_values);
+    AssemblyScratch                  scratch(fe, quadrature);
+    FEValues<dim>                   &fe_values      = scratch.fe_values;
+    FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
     const FEValuesExtractors::Vector u(0);
     const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
     Vector<double>                   cell_rhs(dofs_per_cell);
@@ -223,18 +217,12 @@ namespace VPContact
     // tangential part is the friction force (lambda_i m_i), its normal part
     // the reaction of the foundation. Loads are at the time of the last
     // assemble_rhs().
-    const QGauss<dim - 1>                face_quadrature(fe.degree + 1);
-    FEValues<dim>                        fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients
-                              | update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>                    fe_face_values(fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points
-                                       | update_JxW_values);
-    const FEValuesExtractors::Vector     u(0);
-    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double>                       cell_residual(dofs_per_cell);
+    AssemblyScratch                  scratch(fe, quadrature);
+    FEValues<dim>                   &fe_values      = scratch.fe_values;
+    FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
+    const FEValuesExtractors::Vector u(0);
+    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>                   cell_residual(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
 

@@ -23,15 +23,9 @@ namespace VPContact
     //   (C eps(delta), eps(v)) = (f_n, v) - (sigma(du), eps(v)).
     boundary_conditions.set_time(time);
     const double                     k = time_discretization.step_size();
-    const QGauss<dim - 1>            face_quadrature(fe.degree + 1);
-    FEValues<dim>                    fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients
-                              | update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>                fe_face_values(fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points
-                                       | update_JxW_values);
+    AssemblyScratch                  scratch(fe, quadrature);
+    FEValues<dim>                   &fe_values      = scratch.fe_values;
+    FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
     const FEValuesExtractors::Vector u(0);
     const FEValuesExtractors::Scalar zeta(dim);
     const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();

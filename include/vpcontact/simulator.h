@@ -82,6 +82,28 @@ namespace VPContact
     run();
 
   private:
+    /**
+     * The FEValues of a pass over the cells that assembles forces: values,
+     * gradients, points and weights on the cell, and on faces for the
+     * traction (the rule of the stress history and a Gauss rule on faces).
+     */
+    struct AssemblyScratch
+    {
+      AssemblyScratch(const FiniteElement<dim> &fe,
+                      const Quadrature<dim>    &quadrature)
+        : fe_values(fe,
+                    quadrature,
+                    update_values | update_gradients | update_quadrature_points
+                      | update_JxW_values)
+        , fe_face_values(fe,
+                         QGauss<dim - 1>(fe.degree + 1),
+                         update_values | update_quadrature_points
+                           | update_JxW_values)
+      {}
+      FEValues<dim>     fe_values;
+      FEFaceValues<dim> fe_face_values;
+    };
+
     // simulator.cc
     void
     check_stability_limits() const;
