@@ -8,8 +8,6 @@
 //   from the start is the same as u = 0 on the bottom).
 // The test prints the largest relative difference of u_max, von_mises_max
 // and elastic_energy over all steps between the paired runs.
-#include <vpcontact/simulator.h>
-
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
@@ -17,6 +15,8 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+
+#include "scene_runner.h"
 
 using namespace VPContact;
 
@@ -51,27 +51,8 @@ run(const std::string &friction_bound)
   prm.set("Directory", "run");
   prm.set("Output every", "0");
   prm.leave_subsection();
-  {
-    std::ofstream   log("screen.log");
-    std::streambuf *old = std::cout.rdbuf(log.rdbuf());
-    Simulator<2>    simulator(prm, ".", MPI_COMM_WORLD);
-    simulator.run();
-    std::cout.rdbuf(old);
-  }
-
-  std::ifstream in("run/statistics.csv");
-  std::string   line;
-  std::getline(in, line);
-  const auto columns = Utilities::split_string_list(line, ',');
-  std::vector<std::map<std::string, double>> rows;
-  while (std::getline(in, line))
-    {
-      const auto values = Utilities::split_string_list(line, ',');
-      rows.emplace_back();
-      for (unsigned int c = 0; c < columns.size(); ++c)
-        rows.back()[columns[c]]
-          = values[c].empty() ? 0. : Utilities::string_to_double(values[c]);
-    }
+  run_quietly<2>(prm, ".");
+  const auto rows = read_statistics("run/statistics.csv");
   return rows;
 }
 

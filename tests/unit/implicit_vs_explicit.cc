@@ -7,8 +7,6 @@
 // - the fast-relaxation case eta = 1e-4, k = 0.01 (k = 100 eta, which the
 //   explicit step refuses) runs to the end with the implicit step, and its
 //   stress stays bounded (the backward Euler factor 1/(1 + k/eta) = 1/101).
-#include <vpcontact/simulator.h>
-
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
@@ -16,6 +14,8 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+
+#include "scene_runner.h"
 
 using namespace VPContact;
 
@@ -40,24 +40,10 @@ stress_history(const double k, const double eta, const std::string &integration)
   prm.enter_subsection("Verification");
   prm.set("Exact stress", "");
   prm.leave_subsection();
-  {
-    std::ofstream   log("screen.log");
-    std::streambuf *old = std::cout.rdbuf(log.rdbuf());
-    Simulator<2>    simulator(prm, SOURCE_DIR "/../../prm", MPI_COMM_WORLD);
-    simulator.run();
-    std::cout.rdbuf(old);
-  }
-  std::ifstream in("run/statistics.csv");
-  std::string   line;
-  std::getline(in, line);
-  const auto   columns = Utilities::split_string_list(line, ',');
-  unsigned int column  = 0;
-  while (columns[column] != "von_mises_max")
-    ++column;
+  run_quietly<2>(prm, SOURCE_DIR "/../../prm");
   std::vector<double> stress;
-  while (std::getline(in, line))
-    stress.push_back(Utilities::string_to_double(
-      Utilities::split_string_list(line, ',')[column]));
+  for (const auto &row : read_statistics("run/statistics.csv"))
+    stress.push_back(row.at("von_mises_max"));
   return stress;
 }
 
