@@ -192,16 +192,7 @@ namespace VPContact
     ComponentMask damage_mask(fe.n_components(), false);
     damage_mask.set(dim, true);
     VectorTools::interpolate(dof_handler, initial, damage_owned, damage_mask);
-    double lowest = 1, highest = 0;
-    for (const auto dof : damage_dofs)
-      if (locally_owned_dofs.is_element(dof))
-        {
-          const double value = damage_owned(dof);
-          lowest             = std::min(lowest, value);
-          highest            = std::max(highest, value);
-        }
-    lowest  = Utilities::MPI::min(lowest, mpi_communicator);
-    highest = Utilities::MPI::max(highest, mpi_communicator);
+    const auto [lowest, highest] = damage_range(damage_owned);
     VPContactCheckParameter(lowest >= 0 && highest <= 1,
                             "Damage/Initial damage",
                             "[" + to_text(lowest) + ", " + to_text(highest)
@@ -209,6 +200,26 @@ namespace VPContact
                             "the damage must lie in [0, 1] (1 is sound).");
     solution_owned += damage_owned;
     solution = solution_owned;
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  Simulator<dim>::damage_range(const TrilinosWrappers::MPI::Vector &v) const
+  {
+    // min and max of the damage entries of v, over all ranks.
+    double lowest  = std::numeric_limits<double>::max();
+    double highest = -std::numeric_limits<double>::max();
+    for (const auto dof : damage_dofs)
+      if (locally_owned_dofs.is_element(dof))
+        {
+          const double value = v(dof);
+          lowest             = std::min(lowest, value);
+          highest            = std::max(highest, value);
+        }
+    return {Utilities::MPI::min(lowest, mpi_communicator),
+            Utilities::MPI::max(highest, mpi_communicator)};
   }
 
 
@@ -505,17 +516,8 @@ namespace VPContact
   {
     // Nodal extremes, the bound violation (which must be exactly 0), and the
     // volume fraction where zeta < 1 at the quadrature points.
-    double lowest = 1, highest = 0;
-    for (const auto dof : damage_dofs)
-      if (locally_owned_dofs.is_element(dof))
-        {
-          const double value = solution(dof);
-          lowest             = std::min(lowest, value);
-          highest            = std::max(highest, value);
-        }
-    lowest                 = Utilities::MPI::min(lowest, mpi_communicator);
-    highest                = Utilities::MPI::max(highest, mpi_communicator);
-    const double violation = std::max({0., -lowest, highest - 1.});
+    const auto [lowest, highest] = damage_range(solution);
+    const double violation       = std::max({0., -lowest, highest - 1.});
 
     FEValues<dim> fe_values(fe, quadrature, update_values | update_JxW_values);
     const FEValuesExtractors::Scalar zeta(dim);

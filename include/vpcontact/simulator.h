@@ -167,6 +167,8 @@ namespace VPContact
     setup_damage();
     void
     interpolate_initial_damage();
+    std::pair<double, double>
+    damage_range(const TrilinosWrappers::MPI::Vector &v) const;
     void
     make_damage_constraints();
     void
