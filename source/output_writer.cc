@@ -85,6 +85,7 @@ namespace VPContact
                             "Output/Directory",
                             "(empty)",
                             "give a folder name, e.g. 'results'.");
+    base_directory_name = output_directory;
   }
 
 
@@ -194,6 +195,27 @@ namespace VPContact
   OutputWriter<dim>::directory() const
   {
     return output_directory;
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  OutputWriter<dim>::base_directory() const
+  {
+    return base_directory_name;
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::set_subfolder(const std::string &subfolder)
+  {
+    output_directory
+      = (subfolder.empty() ? base_directory_name :
+                             base_directory_name + "/" + subfolder);
+    times_and_names.clear();
   }
 
 

@@ -53,6 +53,8 @@ namespace VPContact
     LinearSolver::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
+    MeshRefinement<dim>::declare_parameters(prm);
+    ReferenceSolution::declare_parameters(prm);
   }
 
 
@@ -88,6 +90,10 @@ namespace VPContact
     linear_solver.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
+    mesh_refinement.parse_parameters(prm);
+    reference_solution.parse_parameters(prm, output_writer.directory());
+    reference_solution.check_time_step(time_discretization.step_size(),
+                                       time_discretization.end_time());
     check_stability_limits();
   }
 
@@ -126,9 +132,30 @@ namespace VPContact
   {
     // Everything that can be wrong with the input is checked before the
     // first solve: parameters (in the constructor), the output folder, the
-    // mesh and its boundary ids.
+    // mesh and its boundary ids, the reference compared with.
     output_writer.prepare_directory(mpi_communicator);
     make_mesh();
+    if (reference_solution.compares())
+      reference_solution.read_index();
+    for (unsigned int cycle = 0; cycle < mesh_refinement.n_cycles(); ++cycle)
+      {
+        if (cycle > 0)
+          refine_mesh();
+        run_cycle(cycle);
+      }
+    print_convergence_table();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_cycle(const unsigned int cycle)
+  {
+    // One run over [0, T] on the current mesh: set up the discrete problem,
+    // then march in time.
+    Timer timer;
+    start_cycle(cycle);
     setup_dofs();
     setup_stress_history();
     if (damage_model.is_active())
@@ -137,18 +164,36 @@ namespace VPContact
     initialize_linear_solver();
     print_header();
 
+    // Adaptive cycles judge the mesh by indicators over the whole run (see
+    // ErrorIndicator); the last cycle has no next mesh to choose.
+    const bool indicators = mesh_refinement.needs_indicators()
+                            && cycle + 1 < mesh_refinement.n_cycles();
+    const auto finish_step = [&](const unsigned int n, const double wall) {
+      postprocess_step(n, wall);
+      if (indicators)
+        {
+          TimerOutput::Scope t(computing_timer, "Error indicators");
+          error_indicator.accumulate(dof_handler,
+                                     solution,
+                                     damage_model.is_active(),
+                                     material.youngs_modulus());
+        }
+    };
+
     compute_initial_state();
-    postprocess_step(0, 0.);
+    finish_step(0, 0.);
     for (unsigned int n = 1; n <= time_discretization.n_steps(); ++n)
       {
         Timer step_timer;
         solve_step(n);
         step_timer.stop();
-        postprocess_step(n, step_timer.wall_time());
+        finish_step(n, step_timer.wall_time());
       }
     print_summary();
     if (output_writer.report_solve_floor())
       report_solve_floor();
+    timer.stop();
+    finish_cycle(cycle, timer.wall_time() - diagnostics_time);
   }
 
 

@@ -131,10 +131,19 @@ namespace VPContact
                            mpi_communicator);
 
     // The lumped mass m_i = int psi_i: the mass matrix integrated with the
-    // Gauss-Lobatto (trapezoidal) rule, which is diagonal for Q1.
+    // Gauss-Lobatto (trapezoidal) rule, which is diagonal for Q1. On
+    // adaptive meshes it is condensed like the load: a hanging node hands
+    // its mass to the nodes it depends on, and carries no bound itself (its
+    // value is an average of theirs, within [0, 1] when theirs are).
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler,
+                                            hanging_node_constraints);
+    hanging_node_constraints.close();
     const QGaussLobatto<dim> lobatto(2);
     FEValues<dim> fe_values(fe, lobatto, update_values | update_JxW_values);
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    Vector<double>                       cell_mass(fe.n_dofs_per_cell());
     TrilinosWrappers::MPI::Vector        mass;
     mass.reinit(locally_owned_dofs,
                 locally_relevant_dofs,
@@ -145,25 +154,30 @@ namespace VPContact
         {
           fe_values.reinit(cell);
           cell->get_dof_indices(dof_indices);
+          cell_mass = 0.;
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             if (fe.system_to_component_index(i).first == dim)
               for (const unsigned int q : fe_values.quadrature_point_indices())
-                mass(dof_indices[i])
-                  += fe_values.shape_value(i, q) * fe_values.JxW(q);
+                cell_mass(i) += fe_values.shape_value(i, q) * fe_values.JxW(q);
+          hanging_node_constraints.distribute_local_to_global(cell_mass,
+                                                              dof_indices,
+                                                              mass);
         }
     mass.compress(VectorOperation::add);
     lumped_mass.reinit(locally_owned_dofs,
                        locally_relevant_dofs,
                        mpi_communicator);
     lumped_mass = mass;
-    damage_bounds.setup(damage_dofs,
+    IndexSet bounded_dofs(dof_handler.n_dofs());
+    for (const auto dof : damage_dofs)
+      if (!hanging_node_constraints.is_constrained(dof))
+        bounded_dofs.add_index(dof);
+    bounded_dofs.compress();
+    damage_bounds.setup(bounded_dofs,
                         locally_owned_dofs,
                         lumped_mass,
                         mpi_communicator);
 
-    AssertThrow(!triangulation.has_hanging_nodes(),
-                ExcMessage("The damage solver works on meshes without hanging "
-                           "nodes (uniform refinement) in this release."));
     interpolate_initial_damage();
 
     // K = M_L/k + kappa A does not change while the mesh and k do: it is
@@ -192,6 +206,7 @@ namespace VPContact
     ComponentMask damage_mask(fe.n_components(), false);
     damage_mask.set(dim, true);
     VectorTools::interpolate(dof_handler, initial, damage_owned, damage_mask);
+    hanging_node_constraints.distribute(damage_owned);
     const auto [lowest, highest] = damage_range(damage_owned);
     VPContactCheckParameter(lowest >= 0 && highest <= 1,
                             "Damage/Initial damage",
@@ -253,7 +268,8 @@ namespace VPContact
     // (phi_{n-1}, psi) (without): the lumped mass M_L (Gauss-Lobatto
     // points, where psi_i psi_j vanishes for i != j), and the source stored
     // at the Gauss points by assemble_rhs(). The matrix holds every
-    // displacement dof (the constraints without bounds); b is uncondensed.
+    // displacement dof (the constraints without bounds); b is condensed on
+    // hanging nodes only, so that it carries no bound.
     const double                     k     = time_discretization.step_size();
     const double                     kappa = damage_model.diffusion();
     const QGaussLobatto<dim>         lobatto(2);
@@ -298,7 +314,10 @@ namespace VPContact
                                                           dof_indices,
                                                           damage_matrix);
           else
-            damage_load_assembly.add(dof_indices, cell_rhs);
+            hanging_node_constraints.distribute_local_to_global(
+              cell_rhs,
+              dof_indices,
+              damage_load_assembly);
         }
     if (matrix)
       damage_matrix.compress(VectorOperation::add);
@@ -399,7 +418,7 @@ namespace VPContact
     last_damage_iterations = 0;
     damage_change          = 0.;
 
-    // b and b - K zeta_{n-1} of this step, uncondensed (K is the same on
+    // b and b - K zeta_{n-1} of this step, free of bounds (K is the same on
     // the damage rows with or without the held displacement dofs).
     assemble_damage(false);
     TrilinosWrappers::MPI::Vector old_owned(damage_owned),
@@ -440,7 +459,8 @@ namespace VPContact
         damage                 = damage_owned;
         last_damage_iterations = iteration;
 
-        // The multipliers r = b - K zeta, uncondensed.
+        // The multipliers r = b - K zeta (bounds not condensed; hanging
+        // nodes carry none).
         damage_matrix.vmult(damage_residual_owned, damage_owned);
         damage_residual_owned.sadd(-1., 1., damage_load);
         damage_residual = damage_residual_owned;
@@ -503,6 +523,9 @@ namespace VPContact
                            + output_writer.directory() + "."));
     damage_owned.compress(VectorOperation::insert);
     solution_owned.compress(VectorOperation::insert);
+    // Hanging nodes take the average of their (clipped) parents again.
+    hanging_node_constraints.distribute(damage_owned);
+    hanging_node_constraints.distribute(solution_owned);
     last_damage_clip = clip;
     damage           = damage_owned;
     solution         = solution_owned;

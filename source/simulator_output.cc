@@ -131,6 +131,7 @@ namespace VPContact
     if (damage_model.is_active())
       add_damage_statistics(line);
     add_verification_statistics(line, time, u_max, components);
+    add_reference_statistics(line, n);
     if (friction_active)
       add_friction_statistics(line);
     if (!output_writer.deterministic_screen_output() && n > 0)

@@ -60,6 +60,22 @@ namespace VPContact
                             "T/k = " + to_text(ratio)
                               + " steps is more than this program allows "
                                 "(1e8). Choose a larger step.");
+    k_given = k;
+    n_given = n_total;
+  }
+
+
+
+  void
+  TimeDiscretization::set_halvings(const unsigned int j)
+  {
+    AssertThrow(j < 20 && n_given * std::pow(2., j) <= 1e8,
+                ExcMessage("Refining the time step " + std::to_string(j)
+                           + " times would exceed 1e8 steps. Use fewer "
+                             "Mesh refinement/Number of cycles or set Mesh "
+                             "refinement/Refine time step with mesh = false."));
+    k       = k_given / std::pow(2., j);
+    n_total = n_given << j;
   }
 
 

@@ -66,14 +66,26 @@ namespace VPContact
     bool
     report_solve_floor() const;
 
+    /// The folder written to now (the cycle's folder during cycles).
     const std::string &
     directory() const;
+    /// Output/Directory itself (where the convergence table goes).
+    const std::string &
+    base_directory() const;
+    /**
+     * Write the next fields, statistics.csv and .pvd into the folder
+     * @p subfolder of Output/Directory (a new time series), or into
+     * Output/Directory itself if @p subfolder is empty.
+     */
+    void
+    set_subfolder(const std::string &subfolder);
 
   private:
-    std::string  output_directory = "results";
-    unsigned int output_every     = 10;
-    bool         deterministic    = false;
-    bool         solve_floor      = false;
+    std::string  output_directory    = "results";
+    std::string  base_directory_name = "results";
+    unsigned int output_every        = 10;
+    bool         deterministic       = false;
+    bool         solve_floor         = false;
 
     /// (time, .pvtu file) of every field output so far, for the .pvd record.
     std::vector<std::pair<double, std::string>> times_and_names;

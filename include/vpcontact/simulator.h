@@ -4,6 +4,7 @@
 #define vpcontact_simulator_h
 
 #include <vpcontact/boundary_conditions.h>
+#include <vpcontact/convergence_table.h>
 #include <vpcontact/damage_bounds.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/elastic_material.h>
@@ -11,8 +12,10 @@
 #include <vpcontact/geometry.h>
 #include <vpcontact/initial_conditions.h>
 #include <vpcontact/linear_solver.h>
+#include <vpcontact/mesh_refinement.h>
 #include <vpcontact/output_writer.h>
 #include <vpcontact/quadrature_history.h>
+#include <vpcontact/reference_solution.h>
 #include <vpcontact/statistics.h>
 #include <vpcontact/time_discretization.h>
 #include <vpcontact/tresca_friction.h>
@@ -44,6 +47,8 @@ namespace VPContact
    *
    * The implementation is split by concern:
    * - simulator.cc: parameters, construction, the time loop, one step;
+   * - simulator_cycles.cc: refinement cycles, error indicators, snapshots
+   *   and errors against a reference, the convergence table;
    * - simulator_setup.cc: mesh, degrees of freedom, constraints, sparsity,
    *   quadrature point storage;
    * - simulator_assembly.cc: the stiffness matrix (once per mesh) and the
@@ -77,7 +82,7 @@ namespace VPContact
               const std::string &parameter_directory,
               const MPI_Comm     communicator);
 
-    /// Run the scene from t = 0 to T.
+    /// Run the scene from t = 0 to T (once per refinement cycle).
     void
     run();
 
@@ -117,6 +122,22 @@ namespace VPContact
     initialize_linear_solver();
     void
     report_solve_floor();
+
+    // simulator_cycles.cc
+    void
+    run_cycle(const unsigned int cycle);
+    void
+    start_cycle(const unsigned int cycle);
+    void
+    refine_mesh();
+    void
+    finish_cycle(const unsigned int cycle, const double wall_time);
+    Snapshot<dim>
+    make_snapshot(const double time) const;
+    double
+    add_reference_statistics(std::string &line, const unsigned int n);
+    void
+    print_convergence_table() const;
 
     // simulator_setup.cc
     void
@@ -222,6 +243,20 @@ namespace VPContact
     LinearSolver           linear_solver;
     OutputWriter<dim>      output_writer;
     Verification<dim>      verification;
+    MeshRefinement<dim>    mesh_refinement;
+    ErrorIndicator<dim>    error_indicator;
+    ReferenceSolution      reference_solution;
+    ConvergenceTable       convergence_table;
+    /// The equivalent mesh size of the first cycle (for k proportional to h).
+    double first_mesh_size = 0;
+    /// The errors against the reference in the current cycle.
+    ErrorNorms   max_error, final_error;
+    double       max_error_sum  = 0;
+    unsigned int compared_times = 0;
+    unsigned int current_cycle  = 0;
+    /// Time spent on comparisons and snapshots in this cycle, which is not
+    /// counted as the run's time.
+    double diagnostics_time = 0;
 
     parallel::distributed::Triangulation<dim> triangulation;
     /// Q1 displacement, and a Q1 damage component in damage scenes only.
@@ -259,9 +294,12 @@ namespace VPContact
     // The damage step (damage scenes only): its own constraints (every
     // displacement dof held, the active bounds), matrix and vectors on the
     // same DoFHandler, and its active set.
-    IndexSet                       damage_dofs;
-    DamageBounds                   damage_bounds;
-    AffineConstraints<double>      damage_constraints;
+    IndexSet                  damage_dofs;
+    DamageBounds              damage_bounds;
+    AffineConstraints<double> damage_constraints;
+    /// The hanging node constraints alone, which condense the damage load
+    /// and the lumped mass onto the nodes that carry the bounds.
+    AffineConstraints<double>      hanging_node_constraints;
     TrilinosWrappers::SparseMatrix damage_matrix;
     TrilinosWrappers::MPI::Vector  damage_rhs;
     TrilinosWrappers::MPI::Vector  damage_owned;

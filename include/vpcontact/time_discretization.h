@@ -34,10 +34,20 @@ namespace VPContact
     double
     time(const unsigned int n) const;
 
+    /**
+     * Use the step of the parameter file halved @p j times (k / 2^j,
+     * N 2^j steps): the time grid of a refinement cycle. j = 0 restores it.
+     */
+    void
+    set_halvings(const unsigned int j);
+
   private:
     double       T       = 1.;
     double       k       = 0.01;
     unsigned int n_total = 100;
+    /// The step and number of steps of the parameter file.
+    double       k_given = 0.01;
+    unsigned int n_given = 100;
   };
 } // namespace VPContact
 

@@ -1,0 +1,331 @@
+// The section "Mesh refinement", the error indicators accumulated over a run,
+// and the refinement of the mesh between cycles.
+#include <vpcontact/input_error.h>
+#include <vpcontact/mesh_refinement.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <cmath>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  ErrorIndicator<dim>::reinit(const Triangulation<dim> &triangulation)
+  {
+    accumulated.reinit(triangulation.n_active_cells());
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorIndicator<dim>::accumulate(const DoFHandler<dim> &dof_handler,
+                                  const TrilinosWrappers::MPI::Vector &solution,
+                                  const bool   with_damage,
+                                  const double youngs_modulus)
+  {
+    const unsigned int n_components  = dof_handler.get_fe().n_components();
+    const auto        &triangulation = dof_handler.get_triangulation();
+    ComponentMask      displacement(n_components, false);
+    for (unsigned int d = 0; d < dim; ++d)
+      displacement.set(d, true);
+    Vector<float> eta_u(triangulation.n_active_cells());
+    KellyErrorEstimator<dim>::estimate(dof_handler,
+                                       QGauss<dim - 1>(2),
+                                       {},
+                                       solution,
+                                       eta_u,
+                                       displacement);
+    Vector<float> eta_zeta(triangulation.n_active_cells());
+    if (with_damage)
+      {
+        ComponentMask damage(n_components, false);
+        damage.set(dim, true);
+        KellyErrorEstimator<dim>::estimate(dof_handler,
+                                           QGauss<dim - 1>(2),
+                                           {},
+                                           solution,
+                                           eta_zeta,
+                                           damage);
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int i = cell->active_cell_index();
+          const float        eta
+            = (1. + youngs_modulus) * eta_u[i] + cell->diameter() * eta_zeta[i];
+          accumulated[i] = std::max(accumulated[i], eta);
+        }
+  }
+
+
+
+  template <int dim>
+  const Vector<float> &
+  ErrorIndicator<dim>::values() const
+  {
+    return accumulated;
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh refinement");
+    {
+      prm.declare_entry(
+        "Number of cycles",
+        "1",
+        Patterns::Integer(1, 30),
+        "Runs over the whole time interval, each on the mesh refined from "
+        "the previous one and from t = 0. With more than one, each cycle "
+        "writes to Output/Directory/cycle-N and the program writes the "
+        "convergence table convergence.csv in Output/Directory.");
+      prm.declare_entry("Strategy",
+                        "uniform",
+                        Patterns::Selection("uniform|adaptive"),
+                        "'uniform': every cell is refined between cycles (h "
+                        "halves). 'adaptive': cells are refined and "
+                        "coarsened by the error indicators of the previous "
+                        "cycle (Kelly estimator on displacement and damage, "
+                        "largest over the time steps; doc/convergence.md).");
+      prm.declare_entry("Refinement criterion",
+                        "fixed fraction",
+                        Patterns::Selection("fixed fraction|fixed number"),
+                        "Adaptive only. 'fixed fraction': refine the cells "
+                        "that carry 'Refinement fraction' of the summed "
+                        "indicator (coarsen those with 'Coarsening fraction' "
+                        "of it). 'fixed number': refine that fraction of the "
+                        "cells (coarsen that fraction), by largest indicator.");
+      prm.declare_entry("Refinement fraction",
+                        "0.3",
+                        Patterns::Double(0, 1),
+                        "Adaptive only: see Refinement criterion.");
+      prm.declare_entry("Coarsening fraction",
+                        "0",
+                        Patterns::Double(0, 1),
+                        "Adaptive only: see Refinement criterion. Cells are "
+                        "never coarsened below the coarse mesh.");
+      prm.declare_entry("Maximum level",
+                        "10",
+                        Patterns::Integer(0, 20),
+                        "No cell is refined beyond this many levels above "
+                        "the coarse mesh (including Geometry/Global "
+                        "refinements).");
+      prm.declare_entry(
+        "Refine time step with mesh",
+        "true",
+        Patterns::Bool(),
+        "Halve Time/Time step whenever the mesh size halves, so that k stays "
+        "proportional to h (the error is O(h + k)). The mesh size of a cycle "
+        "is the equivalent h = (|Omega| / cells)^(1/dim); k is halved the "
+        "nearest whole number of times, which keeps the time grids of all "
+        "cycles nested.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh refinement");
+    cycles           = prm.get_integer("Number of cycles");
+    refinement       = (prm.get("Strategy") == "adaptive" ? Strategy::adaptive :
+                                                            Strategy::uniform);
+    fixed_fraction   = (prm.get("Refinement criterion") == "fixed fraction");
+    refine_fraction  = prm.get_double("Refinement fraction");
+    coarsen_fraction = prm.get_double("Coarsening fraction");
+    maximum_level    = prm.get_integer("Maximum level");
+    refine_time_step = prm.get_bool("Refine time step with mesh");
+    prm.leave_subsection();
+
+    VPContactCheckParameter(
+      refine_fraction + coarsen_fraction <= 1.,
+      "Mesh refinement/Coarsening fraction",
+      coarsen_fraction,
+      "the refinement and coarsening fractions add up to more than 1 "
+      "(Refinement fraction = "
+        + to_text(refine_fraction) + "). Lower one of them.");
+    VPContactCheckParameter(refinement == Strategy::uniform
+                              || refine_fraction > 0. || cycles == 1,
+                            "Mesh refinement/Refinement fraction",
+                            refine_fraction,
+                            "adaptive cycles with nothing to refine repeat "
+                            "the same run. Give a fraction in (0, 1].");
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MeshRefinement<dim>::n_cycles() const
+  {
+    return cycles;
+  }
+
+
+
+  template <int dim>
+  typename MeshRefinement<dim>::Strategy
+  MeshRefinement<dim>::strategy() const
+  {
+    return refinement;
+  }
+
+
+
+  template <int dim>
+  bool
+  MeshRefinement<dim>::needs_indicators() const
+  {
+    return cycles > 1 && refinement == Strategy::adaptive;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MeshRefinement<dim>::time_step_halvings(const double h_first,
+                                          const double h) const
+  {
+    if (!refine_time_step || h >= h_first)
+      return 0;
+    return static_cast<unsigned int>(std::lround(std::log2(h_first / h)));
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::refine(
+    parallel::distributed::Triangulation<dim> &triangulation,
+    const Vector<float>                       &indicators,
+    const std::set<types::boundary_id>        &uniform_boundary_ids) const
+  {
+    if (refinement == Strategy::uniform)
+      {
+        AssertThrow(triangulation.n_global_levels() <= maximum_level,
+                    ExcMessage("Mesh refinement/Maximum level = "
+                               + std::to_string(maximum_level)
+                               + " is reached: the next uniform cycle would "
+                                 "go beyond it. Raise it or use fewer "
+                                 "Number of cycles."));
+        triangulation.refine_global(1);
+        return;
+      }
+    flag_adaptively(triangulation, indicators);
+
+    // The contact cells move together: if one of them is to be refined, all
+    // are, and none is coarsened. Mesh smoothing (one level difference at
+    // vertices) may add flags next to them, so repeat until nothing changes.
+    const MPI_Comm communicator = triangulation.get_communicator();
+    for (bool changed = true; changed;)
+      {
+        triangulation.prepare_coarsening_and_refinement();
+        bool any_refined = false, all_refined = true;
+        std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() && cell->at_boundary())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary()
+                  && uniform_boundary_ids.count(face->boundary_id()) > 0)
+                {
+                  cells.push_back(cell);
+                  cell->clear_coarsen_flag();
+                  any_refined = any_refined || cell->refine_flag_set();
+                  all_refined = all_refined && cell->refine_flag_set();
+                  break;
+                }
+        any_refined = Utilities::MPI::logical_or(any_refined, communicator);
+        all_refined = !Utilities::MPI::logical_or(!all_refined, communicator);
+        changed     = any_refined && !all_refined;
+        if (changed)
+          for (const auto &cell : cells)
+            cell->set_refine_flag();
+      }
+    triangulation.execute_coarsening_and_refinement();
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::flag_adaptively(
+    parallel::distributed::Triangulation<dim> &triangulation,
+    const Vector<float>                       &indicators) const
+  {
+    if (fixed_fraction)
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+        triangulation,
+        indicators,
+        refine_fraction,
+        coarsen_fraction);
+    else
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        triangulation,
+        indicators,
+        refine_fraction,
+        coarsen_fraction);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          if (cell->level() >= static_cast<int>(maximum_level))
+            cell->clear_refine_flag();
+          if (cell->level() == 0)
+            cell->clear_coarsen_flag();
+        }
+  }
+
+
+
+  template <int dim>
+  std::string
+  MeshRefinement<dim>::description() const
+  {
+    if (cycles == 1)
+      return "one run (no refinement cycles)";
+    std::string text = std::to_string(cycles) + " cycles, ";
+    if (refinement == Strategy::uniform)
+      text += "uniform refinement";
+    else
+      text += "adaptive refinement (" + to_text(refine_fraction)
+              + (fixed_fraction ? " of the indicator" : " of the cells")
+              + " refined, " + to_text(coarsen_fraction) + " coarsened)";
+    return text + (refine_time_step ? ", k proportional to h" : ", k fixed");
+  }
+
+
+
+  template <int dim>
+  double
+  equivalent_mesh_size(const parallel::distributed::Triangulation<dim> &tria)
+  {
+    double volume = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        volume += cell->measure();
+    volume = Utilities::MPI::sum(volume, tria.get_communicator());
+    return std::pow(volume / tria.n_global_active_cells(), 1. / dim);
+  }
+
+
+
+  template class ErrorIndicator<2>;
+  template class ErrorIndicator<3>;
+  template class MeshRefinement<2>;
+  template class MeshRefinement<3>;
+  template double
+  equivalent_mesh_size(const parallel::distributed::Triangulation<2> &);
+  template double
+  equivalent_mesh_size(const parallel::distributed::Triangulation<3> &);
+} // namespace VPContact
