@@ -30,7 +30,10 @@ namespace VPContact
       mesh_refinement.time_step_halvings(first_mesh_size, h));
 
     statistics                 = Statistics();
+    // The active sets refer to degrees of freedom of the previous mesh;
+    // constraints built before their setup must not see them.
     friction_active_set        = FrictionActiveSet<dim>();
+    damage_bounds              = DamageBounds();
     last_linear_iterations     = 0;
     last_active_set_iterations = 0;
     last_damage_iterations     = 0;
