@@ -36,7 +36,8 @@ namespace VPContact
     std::cout.rdbuf(old);
   }
 
-  /// The rows of a statistics.csv file (empty cells read as 0).
+  /// The rows of a statistics.csv or convergence.csv file (empty cells,
+  /// trailing ones included, read as 0).
   inline std::vector<std::map<std::string, double>>
   read_statistics(const std::string &filename)
   {
@@ -50,8 +51,9 @@ namespace VPContact
         const auto values = Utilities::split_string_list(line, ',');
         rows.emplace_back();
         for (unsigned int c = 0; c < columns.size(); ++c)
-          rows.back()[columns[c]]
-            = values[c].empty() ? 0. : Utilities::string_to_double(values[c]);
+          rows.back()[columns[c]] = (c >= values.size() || values[c].empty()) ?
+                                      0. :
+                                      Utilities::string_to_double(values[c]);
       }
     return rows;
   }
