@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Tables and plot of the convergence study (scripts/convergence).
 
-Reads RESULTS/{uniform,adaptive}/convergence.csv (written by vpcontact) and
+Reads RESULTS/{uniform,adaptive,smooth_uniform}/convergence.csv (written by
+vpcontact; the last is optional) and
 writes DOC/convergence_tables.md (the two tables in Markdown) and
 DOC/figures/convergence.png (summed error of Theorem 2 against run time,
 log-log, uniform and adaptive on the same axes).
@@ -47,8 +48,9 @@ def main(results, doc):
         f.write("<!-- Written by scripts/convergence from "
                 "results/convergence/*/convergence.csv; do not edit. -->\n"
                 "# Convergence tables of the paper scene\n\n"
-                "Errors against the reference run (128 x 128 cells, "
-                "k = 0.003125), largest over the common times (every 0.05 s "
+                "Errors against the reference run "
+                "(prm/convergence/paper_fig1_reference.prm: 256 x 256 cells, "
+                "k = 0.0015625), largest over the common times (every 0.05 s "
                 "where the run has a step), in the norms of Theorem 2; "
                 "orders against the previous row in h = (|Ω|/cells)^(1/2). "
                 "Run time: the run on that mesh (setup, all steps, "
@@ -57,6 +59,12 @@ def main(results, doc):
         f.write(table(uniform, "Uniform refinement, h and k halved together"))
         f.write(table(adaptive, "Adaptive refinement (k halved when the "
                                 "equivalent h halves)"))
+        smooth = os.path.join(results, "smooth_uniform", "convergence.csv")
+        if os.path.exists(smooth):
+            f.write(table(read(smooth),
+                          "Smooth variant (prm/convergence/smooth_*.prm, "
+                          "reference 128 x 128 cells, k = 0.003125), uniform "
+                          "refinement"))
 
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     for rows, label, marker in ((uniform, "uniform (h, k halved)", "o"),
