@@ -53,6 +53,7 @@ namespace VPContact
     LinearSolver::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
+    Checkpointing::declare_parameters(prm);
   }
 
 
@@ -88,6 +89,7 @@ namespace VPContact
     linear_solver.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
+    checkpointing.parse_parameters(prm);
     check_stability_limits();
   }
 
@@ -133,22 +135,45 @@ namespace VPContact
     setup_stress_history();
     if (damage_model.is_active())
       setup_damage();
+    // A resumed run takes the state of its checkpoint's step and continues
+    // after it (simulator_checkpoint.cc).
+    const unsigned int first_step =
+      (checkpointing.resume() ? restore_checkpoint() + 1 : 1);
     assemble_stiffness_matrix();
     initialize_linear_solver();
     print_header();
 
-    compute_initial_state();
-    postprocess_step(0, 0.);
-    for (unsigned int n = 1; n <= time_discretization.n_steps(); ++n)
+    if (!checkpointing.resume())
+      {
+        compute_initial_state();
+        postprocess_step(0, 0.);
+      }
+    // From here on SIGINT/SIGTERM/SIGUSR1 stop the run at the end of a step,
+    // with a checkpoint.
+    const auto signal_catcher = (checkpointing.stops_on_signal() ?
+                                   std::make_unique<StopSignalCatcher>() :
+                                   nullptr);
+    for (unsigned int n = first_step; n <= time_discretization.n_steps(); ++n)
       {
         Timer step_timer;
         solve_step(n);
         step_timer.stop();
         postprocess_step(n, step_timer.wall_time());
+        if (checkpoint_after_step(n))
+          return;
       }
     print_summary();
     if (output_writer.report_solve_floor())
       report_solve_floor();
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::stopped_for_resume() const
+  {
+    return stopped_on_signal;
   }
 
 
