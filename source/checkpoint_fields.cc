@@ -11,8 +11,8 @@ namespace VPContact
   {
     template <int dim>
     void
-    save(parallel::distributed::Triangulation<dim>                &triangulation,
-         const DoFHandler<dim>                                    &dof_handler,
+    save(parallel::distributed::Triangulation<dim> &triangulation,
+         const DoFHandler<dim>                     &dof_handler,
          const std::vector<const TrilinosWrappers::MPI::Vector *> &vectors,
          const StressHistory<dim>                                 &history,
          const unsigned int                                        n_q_points,
@@ -30,9 +30,9 @@ namespace VPContact
       // its fixed-size section and can find a cell's data by its position.
       constexpr unsigned int n_values = QuadraturePointHistory<dim>::n_values;
       triangulation.register_data_attach(
-        [&history, n_q_points](
-          const typename Triangulation<dim>::cell_iterator &cell,
-          const typename Triangulation<dim>::CellStatus) {
+        [&history,
+         n_q_points](const typename Triangulation<dim>::cell_iterator &cell,
+                     const typename Triangulation<dim>::CellStatus) {
           const auto points = history.get_data(cell);
           AssertDimension(points.size(), n_q_points);
           std::vector<double> values(n_q_points * n_values);
@@ -84,10 +84,10 @@ namespace VPContact
                         == n_q_points * n_values * sizeof(double),
                       ExcMessage(
                         "The quadrature point data of a cell in the "
-                        "checkpoint has " + std::to_string(bytes.size())
+                        "checkpoint has "
+                        + std::to_string(bytes.size())
                         + " bytes, this program expects "
-                        + std::to_string(n_q_points * n_values
-                                         * sizeof(double))
+                        + std::to_string(n_q_points * n_values * sizeof(double))
                         + ": the checkpoint was written by another version "
                           "of the program."));
           std::vector<double> values(n_q_points * n_values);

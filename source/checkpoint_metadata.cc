@@ -4,19 +4,17 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <boost/crc.hpp>
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
-
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <algorithm>
 #include <cstdio>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace VPContact
 {
@@ -64,7 +62,7 @@ namespace VPContact
     double
     to_double(const std::string &text)
     {
-      std::size_t end   = 0;
+      std::size_t  end   = 0;
       const double value = std::stod(text, &end);
       if (end != text.size())
         throw std::runtime_error("'" + text + "' is not a number");
@@ -164,8 +162,7 @@ namespace VPContact
     catch (const boost::property_tree::json_parser_error &e)
       {
         throw std::runtime_error("it is not valid JSON (" + e.message()
-                                 + ", line " + std::to_string(e.line())
-                                 + ")");
+                                 + ", line " + std::to_string(e.line()) + ")");
       }
 
     CheckpointMetadata metadata;
@@ -173,10 +170,9 @@ namespace VPContact
       {
         const auto version = to_count(child(tree, "format version").data());
         if (version != format_version)
-          throw std::runtime_error("its format version is "
-                                   + std::to_string(version)
-                                   + ", this program reads version "
-                                   + std::to_string(format_version));
+          throw std::runtime_error(
+            "its format version is " + std::to_string(version)
+            + ", this program reads version " + std::to_string(format_version));
         metadata.step           = to_count(child(tree, "step").data());
         metadata.time           = to_double(child(tree, "time").data());
         metadata.cycle          = to_count(child(tree, "cycle").data());
@@ -185,9 +181,9 @@ namespace VPContact
         metadata.n_active_cells = to_count(child(tree, "active cells").data());
         metadata.n_dofs         = to_count(child(tree, "dofs").data());
         for (const auto &[key, entry] : child(tree, "field outputs"))
-          metadata.field_outputs.emplace_back(
-            to_double(child(entry, "time").data()),
-            child(entry, "file").data());
+          metadata.field_outputs.emplace_back(to_double(
+                                                child(entry, "time").data()),
+                                              child(entry, "file").data());
         for (const auto &[key, entry] : child(tree, "counters"))
           metadata.counters[key] = to_double(entry.data());
         for (const auto &[key, entry] : child(tree, "parameters"))
@@ -228,7 +224,7 @@ namespace VPContact
           const std::string path = folder + "/" + name;
           flush_to_disk(path);
           const auto [size, checksum] = size_and_checksum(path);
-          char       line[64];
+          char line[64];
           std::snprintf(line, sizeof(line), " %08x ", checksum);
           manifest << size << line << name << '\n';
         }
@@ -258,8 +254,7 @@ namespace VPContact
     {
       std::ifstream in(folder + "/" + filename);
       if (!in)
-        return "it has no " + filename
-               + " (the checkpoint was not completed)";
+        return "it has no " + filename + " (the checkpoint was not completed)";
       std::string  line;
       unsigned int n_files = 0;
       while (std::getline(in, line))

@@ -8,8 +8,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <filesystem>
-#include <set>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace VPContact
@@ -215,12 +215,12 @@ namespace VPContact
     const double elapsed = std::chrono::duration<double>(
                              std::chrono::steady_clock::now() - last_checkpoint)
                              .count();
-    const int time_due =
-      (rank_zero && every_seconds > 0 && elapsed >= every_seconds) ? 1 : 0;
-    const int local[2] = {StopSignalCatcher::caught_signal(), time_due};
+    const int time_due
+      = (rank_zero && every_seconds > 0 && elapsed >= every_seconds) ? 1 : 0;
+    const int local[2]  = {StopSignalCatcher::caught_signal(), time_due};
     int       global[2] = {0, 0};
-    const int ierr =
-      MPI_Allreduce(local, global, 2, MPI_INT, MPI_MAX, communicator);
+    const int ierr
+      = MPI_Allreduce(local, global, 2, MPI_INT, MPI_MAX, communicator);
     AssertThrowMPI(ierr);
 
     Decision decision;
@@ -310,7 +310,7 @@ namespace VPContact
     const std::vector<std::string> candidates = {checkpoint_folder,
                                                  checkpoint_folder + ".new",
                                                  checkpoint_folder + ".old"};
-    std::vector<std::string> verdict(4); // error, notes, folder, metadata
+    std::vector<std::string>       verdict(4); // error, notes, folder, metadata
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::map<std::string, std::string> problems;
@@ -353,11 +353,10 @@ namespace VPContact
                 "Checkpoint/Folder, or start the run without resuming.");
         else if (chosen < 0)
           {
-            verdict[0] = parameter_message(
-              "Checkpoint/Resume from checkpoint",
-              "true",
-              "no complete checkpoint is left in " + checkpoint_folder
-                + ":");
+            verdict[0] = parameter_message("Checkpoint/Resume from checkpoint",
+                                           "true",
+                                           "no complete checkpoint is left in "
+                                             + checkpoint_folder + ":");
             for (const auto &[folder, problem] : problems)
               verdict[0] += "\n  " + folder + ": " + problem;
             verdict[0] += "\nStart the run afresh without resuming.";
@@ -365,8 +364,8 @@ namespace VPContact
         else
           {
             for (const auto &[folder, problem] : problems)
-              verdict[1] += "Checkpoint: " + folder + " is not usable: "
-                            + problem + ".\n";
+              verdict[1] += "Checkpoint: " + folder
+                            + " is not usable: " + problem + ".\n";
             if (chosen != 0)
               verdict[1] += "Checkpoint: resuming from " + candidates[chosen]
                             + " (step " + std::to_string(newest.step)
@@ -403,10 +402,9 @@ namespace VPContact
         entries.insert(entry);
     for (const auto &entry : entries)
       if (value_in(parameters, entry) != value_in(metadata.parameters, entry))
-        differences += "\n  " + entry + " = "
-                       + value_in(metadata.parameters, entry)
-                       + " in the checkpoint, "
-                       + value_in(parameters, entry) + " now";
+        differences
+          += "\n  " + entry + " = " + value_in(metadata.parameters, entry)
+             + " in the checkpoint, " + value_in(parameters, entry) + " now";
     AssertThrow(differences.empty(),
                 ExcMessage(
                   "Checkpoint/Resume from checkpoint = true: the checkpoint "

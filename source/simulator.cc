@@ -137,8 +137,8 @@ namespace VPContact
       setup_damage();
     // A resumed run takes the state of its checkpoint's step and continues
     // after it (simulator_checkpoint.cc).
-    const unsigned int first_step =
-      (checkpointing.resume() ? restore_checkpoint() + 1 : 1);
+    const unsigned int first_step
+      = (checkpointing.resume() ? restore_checkpoint() + 1 : 1);
     assemble_stiffness_matrix();
     initialize_linear_solver();
     print_header();

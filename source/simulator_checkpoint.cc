@@ -42,8 +42,8 @@ namespace VPContact
                                                  locally_relevant_dofs,
                                                  mpi_communicator);
     last_increment = increment_owned;
-    const std::vector<const TrilinosWrappers::MPI::Vector *> vectors = {
-      &solution, &last_increment, &sets};
+    const std::vector<const TrilinosWrappers::MPI::Vector *> vectors
+      = {&solution, &last_increment, &sets};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
     CheckpointFields::save(triangulation,
                            dof_handler,
@@ -79,8 +79,9 @@ namespace VPContact
   bool
   Simulator<dim>::checkpoint_after_step(const unsigned int n)
   {
-    const auto decision =
-      checkpointing.decide(n, time_discretization.n_steps(), mpi_communicator);
+    const auto decision = checkpointing.decide(n,
+                                               time_discretization.n_steps(),
+                                               mpi_communicator);
     if (decision.write)
       write_checkpoint(n);
     if (!decision.stop)
@@ -90,8 +91,8 @@ namespace VPContact
     pcout << "\nStopped on " << StopSignalCatcher::name(decision.signal)
           << " at the end of step " << n << " of "
           << time_discretization.n_steps()
-          << " (t = " << time_discretization.time(n)
-          << "); the checkpoint in " << checkpointing.folder()
+          << " (t = " << time_discretization.time(n) << "); the checkpoint in "
+          << checkpointing.folder()
           << " holds this state.\nTo continue the run, start it again with "
              "--resume (vpcontact --resume SCENE.prm) or with "
              "Checkpoint/Resume from checkpoint = true. Exit status "
@@ -115,8 +116,8 @@ namespace VPContact
       "Time/End time",
       time_discretization.end_time(),
       "the checkpoint in " + folder + " is at step "
-        + std::to_string(resumed_checkpoint.step) + " (t = "
-        + to_text(resumed_checkpoint.time) + "), and this run has "
+        + std::to_string(resumed_checkpoint.step)
+        + " (t = " + to_text(resumed_checkpoint.time) + "), and this run has "
         + std::to_string(time_discretization.n_steps())
         + " steps: nothing is left to do. Raise the end time to continue the "
           "run.");
@@ -126,14 +127,14 @@ namespace VPContact
     geometry.create_coarse_mesh(triangulation);
     AssertThrow(triangulation.n_global_coarse_cells()
                   == resumed_checkpoint.n_coarse_cells,
-                ExcMessage("The checkpoint in " + folder + " has "
-                           + std::to_string(resumed_checkpoint.n_coarse_cells)
-                           + " coarse cells, the mesh of the Geometry section "
-                             "has "
-                           + std::to_string(
-                               triangulation.n_global_coarse_cells())
-                           + ": has the mesh file changed? Resume with the "
-                             "mesh of the checkpointed run."));
+                ExcMessage(
+                  "The checkpoint in " + folder + " has "
+                  + std::to_string(resumed_checkpoint.n_coarse_cells)
+                  + " coarse cells, the mesh of the Geometry section "
+                    "has "
+                  + std::to_string(triangulation.n_global_coarse_cells())
+                  + ": has the mesh file changed? Resume with the "
+                    "mesh of the checkpointed run."));
     triangulation.load(folder + "/mesh");
     AssertThrow(triangulation.n_global_active_cells()
                   == resumed_checkpoint.n_active_cells,
@@ -148,9 +149,9 @@ namespace VPContact
   unsigned int
   Simulator<dim>::restore_checkpoint()
   {
-    TimerOutput::Scope  t(computing_timer, "Checkpoint");
-    const auto         &checkpoint = resumed_checkpoint;
-    const std::string  &folder     = checkpoint.folder;
+    TimerOutput::Scope t(computing_timer, "Checkpoint");
+    const auto        &checkpoint = resumed_checkpoint;
+    const std::string &folder     = checkpoint.folder;
     AssertThrow(dof_handler.n_dofs() == checkpoint.n_dofs,
                 ExcMessage("The checkpoint in " + folder + " has "
                            + std::to_string(checkpoint.n_dofs)
@@ -161,11 +162,14 @@ namespace VPContact
     // come back without ghosts; the ghosted copies are made from them.
     TrilinosWrappers::MPI::Vector sets_owned(locally_owned_dofs,
                                              mpi_communicator);
-    const std::vector<TrilinosWrappers::MPI::Vector *> vectors = {
-      &solution_owned, &increment_owned, &sets_owned};
+    const std::vector<TrilinosWrappers::MPI::Vector *> vectors
+      = {&solution_owned, &increment_owned, &sets_owned};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
-    CheckpointFields::load(
-      triangulation, dof_handler, vectors, stress_history, quadrature.size());
+    CheckpointFields::load(triangulation,
+                           dof_handler,
+                           vectors,
+                           stress_history,
+                           quadrature.size());
     solution  = solution_owned;
     increment = increment_owned;
     if (damage_model.is_active())

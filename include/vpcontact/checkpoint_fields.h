@@ -47,12 +47,12 @@ namespace VPContact
      */
     template <int dim>
     void
-    save(parallel::distributed::Triangulation<dim>          &triangulation,
-         const DoFHandler<dim>                              &dof_handler,
+    save(parallel::distributed::Triangulation<dim> &triangulation,
+         const DoFHandler<dim>                     &dof_handler,
          const std::vector<const TrilinosWrappers::MPI::Vector *> &vectors,
-         const StressHistory<dim>                           &history,
-         const unsigned int                                  n_q_points,
-         const std::string                                  &filename);
+         const StressHistory<dim>                                 &history,
+         const unsigned int                                        n_q_points,
+         const std::string                                        &filename);
 
     /**
      * After triangulation.load() and the setup of @p dof_handler: fill the
@@ -62,11 +62,11 @@ namespace VPContact
      */
     template <int dim>
     void
-    load(parallel::distributed::Triangulation<dim>     &triangulation,
-         const DoFHandler<dim>                         &dof_handler,
+    load(parallel::distributed::Triangulation<dim>          &triangulation,
+         const DoFHandler<dim>                              &dof_handler,
          const std::vector<TrilinosWrappers::MPI::Vector *> &vectors,
-         StressHistory<dim>                            &history,
-         const unsigned int                             n_q_points);
+         StressHistory<dim>                                 &history,
+         const unsigned int                                  n_q_points);
   } // namespace CheckpointFields
 } // namespace VPContact
 

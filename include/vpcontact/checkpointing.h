@@ -45,7 +45,8 @@ namespace VPContact
     ~StopSignalCatcher();
     StopSignalCatcher(const StopSignalCatcher &) = delete;
     StopSignalCatcher &
-    operator=(const StopSignalCatcher &) = delete;
+    operator=(const StopSignalCatcher &)
+      = delete;
 
     /// The signal that arrived on this rank, or 0.
     static int
@@ -160,15 +161,15 @@ namespace VPContact
     check_compatibility(const CheckpointMetadata &metadata) const;
 
   private:
-    unsigned int every_steps      = 0;
-    double       every_seconds    = 0;
-    bool         resume_run       = false;
-    bool         catch_signals    = true;
+    unsigned int every_steps   = 0;
+    double       every_seconds = 0;
+    bool         resume_run    = false;
+    bool         catch_signals = true;
     std::string  checkpoint_folder;
 
     std::map<std::string, std::string>    parameters;
-    std::chrono::steady_clock::time_point last_checkpoint =
-      std::chrono::steady_clock::now();
+    std::chrono::steady_clock::time_point last_checkpoint
+      = std::chrono::steady_clock::now();
   };
 } // namespace VPContact
 

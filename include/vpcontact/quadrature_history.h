@@ -31,8 +31,8 @@ namespace VPContact
     /// The number of doubles that write_to() and read_from() use; a
     /// checkpoint stores this many per quadrature point. A new member must
     /// be added to all three.
-    static constexpr unsigned int n_values =
-      2 * SymmetricTensor<2, dim>::n_independent_components + 1;
+    static constexpr unsigned int n_values
+      = 2 * SymmetricTensor<2, dim>::n_independent_components + 1;
 
     /// Copy every member into @p values (n_values of them), for checkpoints.
     void

@@ -117,9 +117,9 @@ namespace
                  const bool             exact,
                  const MPI_Comm         communicator)
   {
-    const char *names[] = {"solution (u, zeta)",
-                           "last increment",
-                           "active sets (stick/slip, damage bounds)"};
+    const char         *names[] = {"solution (u, zeta)",
+                                   "last increment",
+                                   "active sets (stick/slip, damage bounds)"};
     std::vector<double> relative;
     for (unsigned int v = 0; v < 3; ++v)
       {
@@ -148,16 +148,15 @@ namespace
                 for (unsigned int i = 0; i < std::size(x); ++i)
                   {
                     history_largest = std::max(history_largest, std::abs(x[i]));
-                    history_difference =
-                      std::max(history_difference, std::abs(x[i] - y[i]));
+                    history_difference
+                      = std::max(history_difference, std::abs(x[i] - y[i]));
                   }
               }
           }
         ++cell_b;
       }
-    relative.push_back(
-      Utilities::MPI::max(history_difference, communicator)
-      / Utilities::MPI::max(history_largest, communicator));
+    relative.push_back(Utilities::MPI::max(history_difference, communicator)
+                       / Utilities::MPI::max(history_largest, communicator));
 
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
@@ -172,9 +171,9 @@ namespace
                                   "stress history at the quadrature points")
                       << ": "
                       << (exact || sets ? "identical: " : "agree to 1e-8: ")
-                      << ((exact || sets) ? (relative[v] == 0. ? "yes" : "NO") :
-                                            (relative[v] <= 1e-8 ? "yes" :
-                                                                   "NO"))
+                      << ((exact || sets) ?
+                            (relative[v] == 0. ? "yes" : "NO") :
+                            (relative[v] <= 1e-8 ? "yes" : "NO"))
                       << std::endl;
           }
       }
@@ -187,10 +186,10 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm                   world     = MPI_COMM_WORLD;
-  const unsigned int               rank      = Utilities::MPI::this_mpi_process(world);
-  const unsigned int               n_ranks   = Utilities::MPI::n_mpi_processes(world);
-  const bool                       exact     = (n_ranks == 1);
+  const MPI_Comm                   world = MPI_COMM_WORLD;
+  const unsigned int rank    = Utilities::MPI::this_mpi_process(world);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(world);
+  const bool         exact   = (n_ranks == 1);
 
   // Rank 0 alone (a communicator of its own) runs the scene uninterrupted
   // and interrupted; the other ranks wait.
@@ -221,7 +220,7 @@ main(int argc, char **argv)
   resumed.enter_subsection("Checkpoint");
   resumed.set("Resume from checkpoint", true);
   resumed.leave_subsection();
-  const std::string log = "resumed." + std::to_string(rank) + ".log";
+  const std::string log           = "resumed." + std::to_string(rank) + ".log";
   const bool        stopped_again = run_logged(resumed, world, log);
   if (rank == 0)
     {

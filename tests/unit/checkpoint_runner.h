@@ -181,8 +181,11 @@ namespace VPContact
     for (const auto &cell : state.triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         state.history.initialize(cell, 4);
-    CheckpointFields::load(
-      state.triangulation, state.dof_handler, pointers, state.history, 4);
+    CheckpointFields::load(state.triangulation,
+                           state.dof_handler,
+                           pointers,
+                           state.history,
+                           4);
   }
 } // namespace VPContact
 
