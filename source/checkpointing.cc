@@ -115,7 +115,7 @@ namespace VPContact
                         "Write a checkpoint at the end of the first step that "
                         "ends this many seconds of wall-clock time (measured "
                         "on rank 0) after the start of the run or the last "
-                        "checkpoint, e.g. 3600 for one an hour; 0: never.");
+                        "checkpoint, e.g. 3600 for one every hour; 0: never.");
       prm.declare_entry("Stop on signal",
                         "true",
                         Patterns::Bool(),
@@ -137,8 +137,9 @@ namespace VPContact
                         "",
                         Patterns::Anything(),
                         "Folder of the checkpoint; empty: 'checkpoint' inside "
-                        "Output/Directory. While a checkpoint is written, "
-                        "FOLDER.new and FOLDER.old are used next to it. A "
+                        "Output/Directory. Next to it, FOLDER.new holds a "
+                        "checkpoint while it is written and FOLDER.old the "
+                        "previous one (the fallback if FOLDER is damaged). A "
                         "relative path is relative to the working directory.");
     }
     prm.leave_subsection();

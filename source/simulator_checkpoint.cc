@@ -200,8 +200,15 @@ namespace VPContact
     output_writer.restore_field_outputs(checkpoint.field_outputs,
                                         mpi_communicator);
     verification.restore_running_maxima(checkpoint.counters);
-    max_friction_violation = checkpoint.counters.at("max_friction_violation");
-    max_damage_violation   = checkpoint.counters.at("max_damage_violation");
+    const auto counter = [&](const std::string &name) {
+      const auto found = checkpoint.counters.find(name);
+      AssertThrow(found != checkpoint.counters.end(),
+                  ExcMessage("The checkpoint in " + folder + " has no counter "
+                             + name + " in its checkpoint.json."));
+      return found->second;
+    };
+    max_friction_violation = counter("max_friction_violation");
+    max_damage_violation   = counter("max_damage_violation");
 
     pcout << "Resuming from the checkpoint in " << folder << ": step "
           << checkpoint.step << ", t = " << checkpoint.time;
