@@ -178,19 +178,21 @@ namespace VPContact
         damage       = damage_owned;
       }
 
-    // The active sets; the stick nodes change the constraints and so the
-    // matrix, which run() assembles next.
+    // The active sets, and the constraints as the uninterrupted run has
+    // them after step n: the stick nodes of the restored set (they shape the
+    // matrix, which run() assembles next), and prescribed displacements with
+    // the increment g(t_n) - u_n, zero at the end of a step. The explicit
+    // step rebuilds them for its own time anyway; the implicit step starts
+    // its first Newton correction from them.
     TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
                                        locally_relevant_dofs,
                                        mpi_communicator);
     sets = sets_owned;
     if (friction_active)
-      {
-        friction_active_set.read_state(sets);
-        make_constraints(0., nullptr);
-      }
+      friction_active_set.read_state(sets);
     if (damage_model.is_active())
       damage_bounds.read_state(sets);
+    make_constraints(time_discretization.time(checkpoint.step), &solution);
 
     // What the run has written so far, as it stood at the checkpoint: the
     // table and the .pvd record continue from there, whatever the stopped

@@ -106,7 +106,8 @@ namespace VPContact
    * @p log (SIGTERM after the line that starts with @p trigger, if not
    * empty). Returns whether the run stopped for a resume.
    */
-  inline bool
+  template <int dim = 2>
+  bool
   run_logged(ParameterHandler  &prm,
              const MPI_Comm     communicator,
              const std::string &log,
@@ -116,7 +117,7 @@ namespace VPContact
     std::streambuf *old = std::cout.rdbuf(&buffer);
     try
       {
-        Simulator<2> simulator(prm, SOURCE_DIR "/../../prm", communicator);
+        Simulator<dim> simulator(prm, SOURCE_DIR "/../../prm", communicator);
         simulator.run();
         std::cout.rdbuf(old);
         return simulator.stopped_for_resume();
