@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -19,13 +20,18 @@ namespace VPContact
     void
     print_usage(std::ostream &out)
     {
-      out << "Usage: vpcontact SCENE.prm\n"
+      out << "Usage: vpcontact [--resume] SCENE.prm\n"
              "       vpcontact --print-parameters [2|3]\n"
              "       vpcontact --help\n\n"
              "Runs the quasistatic scene described by SCENE.prm (deal.II "
              "ParameterHandler format)\nand writes its fields (.pvtu/.pvd) and "
              "statistics.csv to Output/Directory.\nRun in parallel with "
              "`mpirun -np N vpcontact SCENE.prm`.\n\n"
+             "--resume            continue the run from its newest complete "
+             "checkpoint (the same\n                    as Checkpoint/Resume "
+             "from checkpoint = true). A run stopped by\n                    "
+             "SIGINT, SIGTERM or SIGUSR1 writes one and exits with status "
+             "75.\n"
              "--print-parameters  print every parameter with its default, "
              "allowed values and\n                    documentation, as a "
              "valid .prm file (for a 2D or 3D scene).\n";
@@ -76,20 +82,33 @@ namespace VPContact
 
 
 
+    // Run the scene; the exit status is 0, or
+    // exit_status_stopped_for_resume when a signal stopped the run after a
+    // checkpoint.
     template <int dim>
-    void
-    run_scene(const std::string &filename, const MPI_Comm communicator)
+    int
+    run_scene(const std::string &filename,
+              const bool         resume,
+              const MPI_Comm     communicator)
     {
       ParameterHandler   prm;
       std::istringstream text(read_parameter_file(filename));
       Simulator<dim>::declare_parameters(prm);
       prm.parse_input(text, filename);
+      if (resume)
+        {
+          prm.enter_subsection("Checkpoint");
+          prm.set("Resume from checkpoint", true);
+          prm.leave_subsection();
+        }
       const std::string directory
         = std::filesystem::path(filename).parent_path().string();
       Simulator<dim> simulator(prm,
                                directory.empty() ? "." : directory,
                                communicator);
       simulator.run();
+      return simulator.stopped_for_resume() ? exit_status_stopped_for_resume :
+                                              0;
     }
 
 
@@ -125,7 +144,13 @@ namespace VPContact
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     const MPI_Comm                   communicator = MPI_COMM_WORLD;
     const bool rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
-    const std::vector<std::string> args(argv + 1, argv + argc);
+    // --resume may stand before or after the scene; the rest of the command
+    // line is read without it.
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const auto               resume_flag
+      = std::remove(args.begin(), args.end(), std::string("--resume"));
+    const bool resume = (resume_flag != args.end());
+    args.erase(resume_flag, args.end());
     // ParameterHandler's messages name the file with the path it was given;
     // show it relative to the parameter file's folder, as the user wrote it.
     const auto shorten_paths = [&](std::string message) {
@@ -167,10 +192,9 @@ namespace VPContact
         AssertThrow(std::ifstream(filename).good(),
                     ExcMessage("Cannot open the parameter file '" + filename
                                + "'. Check the path."));
-        if (read_dimension(filename) == 2)
-          run_scene<2>(filename, communicator);
-        else
-          run_scene<3>(filename, communicator);
+        return (read_dimension(filename) == 2 ?
+                  run_scene<2>(filename, resume, communicator) :
+                  run_scene<3>(filename, resume, communicator));
       }
     catch (const ExceptionBase &e)
       {

@@ -104,4 +104,31 @@ namespace VPContact
     return {Utilities::MPI::sum(n_lower, communicator),
             Utilities::MPI::sum(n_upper, communicator)};
   }
+
+
+
+  void
+  DamageBounds::write_state(TrilinosWrappers::MPI::Vector &state) const
+  {
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i])
+        state(dofs[i]) = static_cast<double>(static_cast<int>(status[i]));
+    state.compress(VectorOperation::insert);
+  }
+
+
+
+  void
+  DamageBounds::read_state(const TrilinosWrappers::MPI::Vector &state)
+  {
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        const double value = state(dofs[i]);
+        AssertThrow(value == -1. || value == 0. || value == 1.,
+                    ExcMessage("The checkpoint holds no valid damage bound "
+                               "state at damage degree of freedom "
+                               + std::to_string(dofs[i]) + "."));
+        status[i] = static_cast<BoundStatus>(static_cast<int>(value));
+      }
+  }
 } // namespace VPContact

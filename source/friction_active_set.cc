@@ -310,6 +310,46 @@ namespace VPContact
 
 
 
+  template <int dim>
+  void
+  FrictionActiveSet<dim>::write_state(
+    TrilinosWrappers::MPI::Vector &state) const
+  {
+    for (const auto &node : nodes)
+      if (node.owned)
+        {
+          state(node.dofs[0]) = static_cast<double>(node.status);
+          state(node.dofs[1]) = node.direction;
+        }
+    state.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionActiveSet<dim>::read_state(const TrilinosWrappers::MPI::Vector &state)
+  {
+    for (auto &node : nodes)
+      {
+        const double status    = state(node.dofs[0]);
+        const double direction = state(node.dofs[1]);
+        AssertThrow((status == 1. || status == 2.)
+                      && (direction == -1. || direction == 0.
+                          || direction == 1.),
+                    ExcMessage("The checkpoint holds no valid stick/slip "
+                               "state at the contact node at "
+                               + std::to_string(node.position[0]) + ", "
+                               + std::to_string(node.position[1])
+                               + ": it was written for another contact "
+                                 "boundary."));
+        node.status    = static_cast<ContactStatus>(static_cast<int>(status));
+        node.direction = direction;
+      }
+  }
+
+
+
   template class FrictionActiveSet<2>;
   template class FrictionActiveSet<3>;
 } // namespace VPContact

@@ -125,6 +125,17 @@ namespace VPContact
   Geometry<dim>::create_mesh(
     parallel::distributed::Triangulation<dim> &triangulation) const
   {
+    create_coarse_mesh(triangulation);
+    triangulation.refine_global(n_global_refinements);
+  }
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::create_coarse_mesh(
+    parallel::distributed::Triangulation<dim> &triangulation) const
+  {
     if (shape == Shape::box)
       GridGenerator::subdivided_hyper_rectangle(triangulation,
                                                 subdivisions,
@@ -157,7 +168,6 @@ namespace VPContact
                                    + "D mesh. Its message was:\n" + e.what()));
           }
       }
-    triangulation.refine_global(n_global_refinements);
   }
 
 

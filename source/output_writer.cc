@@ -149,13 +149,43 @@ namespace VPContact
                                             communicator,
                                             5);
     times_and_names.emplace_back(time, pvtu);
+    write_pvd_record(communicator);
+  }
 
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::write_pvd_record(const MPI_Comm communicator) const
+  {
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::ostringstream pvd;
         DataOutBase::write_pvd_record(pvd, times_and_names);
         write_file_atomically(output_directory + "/solution.pvd", pvd.str());
       }
+  }
+
+
+
+  template <int dim>
+  const std::vector<std::pair<double, std::string>> &
+  OutputWriter<dim>::field_outputs() const
+  {
+    return times_and_names;
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::restore_field_outputs(
+    const std::vector<std::pair<double, std::string>> &outputs,
+    const MPI_Comm                                     communicator)
+  {
+    times_and_names = outputs;
+    if (!times_and_names.empty())
+      write_pvd_record(communicator);
   }
 
 

@@ -1,4 +1,5 @@
-// The --print-parameters listing, built from ParameterHandler's JSON output.
+// The --print-parameters listing and the flat list of values, both built from
+// ParameterHandler's JSON output.
 #include <vpcontact/parameter_listing.h>
 
 #include <boost/property_tree/json_parser.hpp>
@@ -77,6 +78,18 @@ namespace VPContact
             out << indent << "end\n\n";
           }
     }
+
+    void
+    collect_values(const boost::property_tree::ptree  &tree,
+                   const std::string                  &prefix,
+                   std::map<std::string, std::string> &values)
+    {
+      for (const auto &[name, node] : tree)
+        if (const auto value = node.get_optional<std::string>("value"))
+          values[prefix + demangle(name)] = *value;
+        else
+          collect_values(node, prefix + demangle(name) + "/", values);
+    }
   } // namespace
 
 
@@ -90,5 +103,19 @@ namespace VPContact
     boost::property_tree::ptree tree;
     boost::property_tree::read_json(json, tree);
     print_section(out, tree, "");
+  }
+
+
+
+  std::map<std::string, std::string>
+  parameter_values(const dealii::ParameterHandler &prm)
+  {
+    std::stringstream json;
+    prm.print_parameters(json, dealii::ParameterHandler::JSON);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(json, tree);
+    std::map<std::string, std::string> values;
+    collect_values(tree, "", values);
+    return values;
   }
 } // namespace VPContact

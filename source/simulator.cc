@@ -55,6 +55,7 @@ namespace VPContact
     Verification<dim>::declare_parameters(prm);
     MeshRefinement<dim>::declare_parameters(prm);
     ReferenceSolution::declare_parameters(prm);
+    Checkpointing::declare_parameters(prm);
   }
 
 
@@ -94,6 +95,20 @@ namespace VPContact
     reference_solution.parse_parameters(prm, output_writer.directory());
     reference_solution.check_time_step(time_discretization.step_size(),
                                        time_discretization.end_time());
+    checkpointing.parse_parameters(prm);
+    // A checkpoint holds one run's state; the state of a sequence of cycles
+    // (the table so far, the indicators of the current cycle) is not in it.
+    AssertThrow(mesh_refinement.n_cycles() == 1
+                  || (!checkpointing.writes_periodically()
+                      && !checkpointing.resume()),
+                ExcMessage(
+                  "Checkpoint: runs with refinement cycles (Mesh "
+                  "refinement/Number of cycles = "
+                  + std::to_string(mesh_refinement.n_cycles())
+                  + ") are not checkpointed in this release. Set "
+                    "Checkpoint/Every steps = 0, Checkpoint/Every seconds = 0 "
+                    "and Resume from checkpoint = false, or run the mesh of "
+                    "one cycle as a single run."));
     check_stability_limits();
   }
 
@@ -142,6 +157,8 @@ namespace VPContact
         if (cycle > 0)
           refine_mesh();
         run_cycle(cycle);
+        if (stopped_on_signal)
+          return;
       }
     print_convergence_table();
   }
@@ -160,6 +177,10 @@ namespace VPContact
     setup_stress_history();
     if (damage_model.is_active())
       setup_damage();
+    // A resumed run takes the state of its checkpoint's step and continues
+    // after it (simulator_checkpoint.cc).
+    const unsigned int first_step
+      = (checkpointing.resume() ? restore_checkpoint() + 1 : 1);
     assemble_stiffness_matrix();
     initialize_linear_solver();
     print_header();
@@ -180,20 +201,41 @@ namespace VPContact
         }
     };
 
-    compute_initial_state();
-    finish_step(0, 0.);
-    for (unsigned int n = 1; n <= time_discretization.n_steps(); ++n)
+    if (!checkpointing.resume())
+      {
+        compute_initial_state();
+        finish_step(0, 0.);
+      }
+    // From here on SIGINT/SIGTERM/SIGUSR1 stop a single run at the end of a
+    // step, with a checkpoint (runs with cycles are not checkpointed).
+    const auto signal_catcher =
+      (checkpointing.stops_on_signal() && mesh_refinement.n_cycles() == 1 ?
+         std::make_unique<StopSignalCatcher>() :
+         nullptr);
+    for (unsigned int n = first_step; n <= time_discretization.n_steps(); ++n)
       {
         Timer step_timer;
         solve_step(n);
         step_timer.stop();
         finish_step(n, step_timer.wall_time());
+        if (signal_catcher || checkpointing.writes_periodically())
+          if (checkpoint_after_step(n))
+            return;
       }
     print_summary();
     if (output_writer.report_solve_floor())
       report_solve_floor();
     timer.stop();
     finish_cycle(cycle, timer.wall_time() - diagnostics_time);
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::stopped_for_resume() const
+  {
+    return stopped_on_signal;
   }
 
 

@@ -13,7 +13,10 @@ namespace VPContact
   Simulator<dim>::make_mesh()
   {
     TimerOutput::Scope t(computing_timer, "Setup");
-    geometry.create_mesh(triangulation);
+    if (checkpointing.resume())
+      load_checkpoint_mesh();
+    else
+      geometry.create_mesh(triangulation);
     boundary_conditions.check_against_mesh(
       Geometry<dim>::boundary_ids_of(triangulation));
     if (boundary_conditions.has_contact_boundary())

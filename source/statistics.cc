@@ -82,4 +82,40 @@ namespace VPContact
   {
     return rows.size();
   }
+
+
+
+  void
+  Statistics::read_csv(const std::string &csv)
+  {
+    // The cells are the texts to_csv() wrote, kept as they are, so that the
+    // table writes back to the same text; an empty cell is no value.
+    const auto split = [](const std::string &line) {
+      std::vector<std::string> cells(1);
+      for (const char c : line)
+        if (c == ',')
+          cells.emplace_back();
+        else
+          cells.back() += c;
+      return cells;
+    };
+    std::istringstream in(csv);
+    std::string        line;
+    columns.clear();
+    rows.clear();
+    if (!std::getline(in, line))
+      return;
+    columns = split(line);
+    while (std::getline(in, line))
+      {
+        const auto cells = split(line);
+        AssertThrow(cells.size() <= columns.size(),
+                    dealii::ExcMessage("A row of the statistics table has "
+                                       "more cells than its header."));
+        rows.emplace_back();
+        for (unsigned int c = 0; c < cells.size(); ++c)
+          if (!cells[c].empty())
+            rows.back()[columns[c]] = cells[c];
+      }
+  }
 } // namespace VPContact

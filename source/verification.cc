@@ -274,6 +274,37 @@ namespace VPContact
 
 
 
+  template <int dim>
+  std::map<std::string, double>
+  Verification<dim>::running_maxima() const
+  {
+    return {{"max_nodal_error", max_nodal_error},
+            {"max_displacement", max_displacement},
+            {"max_damage_error", max_damage_error},
+            {"max_stress_error", max_stress_error},
+            {"max_stress", max_stress}};
+  }
+
+
+
+  template <int dim>
+  void
+  Verification<dim>::restore_running_maxima(
+    const std::map<std::string, double> &maxima)
+  {
+    const auto value = [&](const std::string &name) {
+      const auto found = maxima.find(name);
+      return found == maxima.end() ? 0. : found->second;
+    };
+    max_nodal_error  = value("max_nodal_error");
+    max_displacement = value("max_displacement");
+    max_damage_error = value("max_damage_error");
+    max_stress_error = value("max_stress_error");
+    max_stress       = value("max_stress");
+  }
+
+
+
   template class Verification<2>;
   template class Verification<3>;
 } // namespace VPContact

@@ -6,9 +6,11 @@ namespace VPContact
 {
   /**
    * Run the program as `vpcontact [--help | --print-parameters [dim] |
-   * scene.prm]`: initialize MPI, read the dimension from the scene, run the
-   * simulator of that dimension. Errors are caught here and printed (on rank
-   * 0) as one clean message; the return value is the exit status.
+   * [--resume] scene.prm]`: initialize MPI, read the dimension from the
+   * scene, run the simulator of that dimension. Errors are caught here and
+   * printed (on rank 0) as one clean message; the return value is the exit
+   * status: 0, 1 on an error, 75 when a signal stopped the run after a
+   * checkpoint.
    */
   int
   run_application(int argc, char **argv);

@@ -89,6 +89,16 @@ namespace VPContact
     std::pair<unsigned int, unsigned int>
     count() const;
 
+    /// For checkpoints: write the set of every owned node (-1 lower, 0
+    /// free, 1 upper) into its entry of @p state (a vector on all dofs).
+    void
+    write_state(TrilinosWrappers::MPI::Vector &state) const;
+
+    /// The inverse of write_state(), from a ghosted @p state, for every
+    /// relevant node. Throws if a value is not a set.
+    void
+    read_state(const TrilinosWrappers::MPI::Vector &state);
+
   private:
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  mass;

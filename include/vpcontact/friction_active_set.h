@@ -114,6 +114,21 @@ namespace VPContact
     bool
     empty() const;
 
+    /**
+     * For checkpoints: write the set of every owned contact node into
+     * @p state (a vector on all dofs): its status (1 stick, 2 slip) into
+     * the x component and its slip direction (-1, 0, 1) into the y
+     * component. Stored as a finite element vector, the sets travel with
+     * the mesh to any number of ranks.
+     */
+    void
+    write_state(TrilinosWrappers::MPI::Vector &state) const;
+
+    /// The inverse of write_state(), from a ghosted @p state, for every
+    /// node this rank sees. Throws if a value is not a status.
+    void
+    read_state(const TrilinosWrappers::MPI::Vector &state);
+
   private:
     struct Node
     {

@@ -45,6 +45,14 @@ namespace VPContact
     create_mesh(parallel::distributed::Triangulation<dim> &triangulation) const;
 
     /**
+     * Only the coarse mesh, without the global refinements: what
+     * Triangulation::load() of a checkpoint starts from.
+     */
+    void
+    create_coarse_mesh(
+      parallel::distributed::Triangulation<dim> &triangulation) const;
+
+    /**
      * The set of boundary ids that the mesh has, on all ranks together.
      */
     static std::set<types::boundary_id>

@@ -80,7 +80,25 @@ namespace VPContact
     void
     set_subfolder(const std::string &subfolder);
 
+    /// (time, .pvtu file) of every field output so far (for checkpoints).
+    const std::vector<std::pair<double, std::string>> &
+    field_outputs() const;
+
+    /**
+     * A resumed run: take the field outputs of the checkpoint and rewrite
+     * the .pvd record with them (rank 0), dropping any step written after
+     * the checkpoint by the run that stopped.
+     */
+    void
+    restore_field_outputs(
+      const std::vector<std::pair<double, std::string>> &outputs,
+      const MPI_Comm                                     communicator);
+
   private:
+    /// Rewrite solution.pvd from times_and_names (rank 0 writes).
+    void
+    write_pvd_record(const MPI_Comm communicator) const;
+
     std::string  output_directory    = "results";
     std::string  base_directory_name = "results";
     unsigned int output_every        = 10;

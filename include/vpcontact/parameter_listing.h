@@ -1,11 +1,14 @@
 // The --print-parameters listing: every entry with its default, its allowed
-// values and its documentation, written as a valid parameter file.
+// values and its documentation, written as a valid parameter file; and the
+// current values as a flat list.
 #ifndef vpcontact_parameter_listing_h
 #define vpcontact_parameter_listing_h
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
 #include <ostream>
+#include <string>
 
 namespace VPContact
 {
@@ -18,6 +21,13 @@ namespace VPContact
   void
   print_parameter_listing(const dealii::ParameterHandler &prm,
                           std::ostream                   &out);
+
+  /**
+   * The current value of every entry of @p prm, keyed by its path
+   * "Section/Subsection/Entry" (top-level entries by their name alone).
+   */
+  std::map<std::string, std::string>
+  parameter_values(const dealii::ParameterHandler &prm);
 } // namespace VPContact
 
 #endif

@@ -27,6 +27,40 @@ namespace VPContact
     SymmetricTensor<2, dim> predictor;
     /// phi_{n-1}, the damage source of the current step (damage scenes).
     double damage_source = 0;
+
+    /// The number of doubles that write_to() and read_from() use; a
+    /// checkpoint stores this many per quadrature point. A new member must
+    /// be added to all three.
+    static constexpr unsigned int n_values
+      = 2 * SymmetricTensor<2, dim>::n_independent_components + 1;
+
+    /// Copy every member into @p values (n_values of them), for checkpoints.
+    void
+    write_to(double *values) const
+    {
+      for (unsigned int c = 0;
+           c < SymmetricTensor<2, dim>::n_independent_components;
+           ++c)
+        {
+          *values++ = stress.access_raw_entry(c);
+          *values++ = predictor.access_raw_entry(c);
+        }
+      *values = damage_source;
+    }
+
+    /// The inverse of write_to().
+    void
+    read_from(const double *values)
+    {
+      for (unsigned int c = 0;
+           c < SymmetricTensor<2, dim>::n_independent_components;
+           ++c)
+        {
+          stress.access_raw_entry(c)    = *values++;
+          predictor.access_raw_entry(c) = *values++;
+        }
+      damage_source = *values;
+    }
   };
 
   /// The per-cell storage of QuadraturePointHistory (deal.II's

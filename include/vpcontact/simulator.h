@@ -5,6 +5,7 @@
 
 #include <vpcontact/boundary_conditions.h>
 #include <vpcontact/convergence_table.h>
+#include <vpcontact/checkpointing.h>
 #include <vpcontact/damage_bounds.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/elastic_material.h>
@@ -56,7 +57,8 @@ namespace VPContact
    * - simulator_implicit.cc: the backward Euler alternative to step 1-3;
    * - simulator_stress.cc: the stress update and its safeguards;
    * - simulator_damage.cc: the damage field and its obstacle problem;
-   * - simulator_output.cc: statistics, screen and field output.
+   * - simulator_output.cc: statistics, screen and field output;
+   * - simulator_checkpoint.cc: writing a checkpoint, and resuming from one.
    *
    * The unknowns are the displacement, Q1 in every component of one
    * FESystem, and the stress at the quadrature points of the assembly rule.
@@ -82,9 +84,18 @@ namespace VPContact
               const std::string &parameter_directory,
               const MPI_Comm     communicator);
 
-    /// Run the scene from t = 0 to T (once per refinement cycle).
+    /// Run the scene from t = 0 (or from a checkpoint) to T, once per
+    /// refinement cycle.
     void
     run();
+
+    /**
+     * Whether run() stopped before T on a signal, after writing a
+     * checkpoint (the program then exits with
+     * exit_status_stopped_for_resume).
+     */
+    bool
+    stopped_for_resume() const;
 
   private:
     /**
@@ -223,6 +234,16 @@ namespace VPContact
     void
     print_summary() const;
 
+    // simulator_checkpoint.cc
+    void
+    load_checkpoint_mesh();
+    unsigned int
+    restore_checkpoint();
+    bool
+    checkpoint_after_step(const unsigned int n);
+    void
+    write_checkpoint(const unsigned int n);
+
     MPI_Comm            mpi_communicator;
     ConditionalOStream  pcout;
     mutable TimerOutput computing_timer;
@@ -257,6 +278,11 @@ namespace VPContact
     /// Time spent on comparisons and snapshots in this cycle, which is not
     /// counted as the run's time.
     double diagnostics_time = 0;
+    Checkpointing          checkpointing;
+    /// The checkpoint a resumed run reads (found by load_checkpoint_mesh()).
+    CheckpointMetadata resumed_checkpoint;
+    /// Set when a signal stopped the run after a checkpoint.
+    bool stopped_on_signal = false;
 
     parallel::distributed::Triangulation<dim> triangulation;
     /// Q1 displacement, and a Q1 damage component in damage scenes only.

@@ -38,6 +38,14 @@ namespace VPContact
     unsigned int
     n_rows() const;
 
+    /**
+     * Replace the table by the one in @p csv, the text of an earlier
+     * to_csv() (a resumed run continues its table). Throws if a row has
+     * more cells than the header.
+     */
+    void
+    read_csv(const std::string &csv);
+
   private:
     void
     add_text(const std::string &column, const std::string &text);

@@ -9,7 +9,9 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <map>
 #include <memory>
+#include <string>
 
 namespace VPContact
 {
@@ -87,6 +89,14 @@ namespace VPContact
      */
     std::string
     summary() const;
+
+    /// The largest errors so far, by name, that summary() reports (for
+    /// checkpoints), and their restoration in a resumed run.
+    std::map<std::string, double>
+    running_maxima() const;
+
+    void
+    restore_running_maxima(const std::map<std::string, double> &maxima);
 
   private:
     /// A relative nodal error below this is round-off for double precision

@@ -31,7 +31,8 @@ check()
                                     "Time",
                                     "Solver",
                                     "Output",
-                                    "Verification"})
+                                    "Verification",
+                                    "Checkpoint"})
     std::cout << "  section " << section << ": "
               << (listing.str().find("subsection " + section)
                       != std::string::npos ?

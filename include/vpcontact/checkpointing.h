@@ -1,0 +1,180 @@
+// Section "Checkpoint": when a run writes checkpoints, where, how it stops on
+// a signal, and how a checkpoint is put in place and found again on resume.
+#ifndef vpcontact_checkpointing_h
+#define vpcontact_checkpointing_h
+
+#include <vpcontact/checkpoint_metadata.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <array>
+#include <chrono>
+#include <csignal>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * The exit status of a run that stopped on a signal after writing a
+   * checkpoint: 75, EX_TEMPFAIL of sysexits.h ("temporary failure; the user
+   * is invited to retry"), so that a job script can tell "resume me" from
+   * success (0) and from an error (1).
+   */
+  constexpr int exit_status_stopped_for_resume = 75;
+
+  /**
+   * While an object of this class exists, SIGINT, SIGTERM and SIGUSR1 do
+   * not end the program: they only record that a stop was asked for, and
+   * the time loop stops cleanly at the end of the current step, after
+   * writing a checkpoint. A second signal of the same kind ends the program
+   * at once (the handler is reset to the default after the first one), so
+   * that a user who presses Ctrl-C twice is not kept waiting. A signal that
+   * was ignored when the object was made (nohup) stays ignored. The
+   * destructor restores the previous handlers and forgets the signal.
+   */
+  class StopSignalCatcher
+  {
+  public:
+    StopSignalCatcher();
+    ~StopSignalCatcher();
+    StopSignalCatcher(const StopSignalCatcher &) = delete;
+    StopSignalCatcher &
+    operator=(const StopSignalCatcher &)
+      = delete;
+
+    /// The signal that arrived on this rank, or 0.
+    static int
+    caught_signal();
+
+    /// "SIGTERM" and so on.
+    static std::string
+    name(const int signal);
+
+  private:
+    static constexpr std::array<int, 3> signals = {{SIGINT, SIGTERM, SIGUSR1}};
+    std::array<struct sigaction, 3>     previous;
+    std::array<bool, 3>                 installed = {{false, false, false}};
+  };
+
+
+
+  /**
+   * Section "Checkpoint". A checkpoint is the folder Checkpoint/Folder
+   * (default: checkpoint inside Output/Directory) holding the mesh with the
+   * fields (CheckpointFields), checkpoint.json (CheckpointMetadata) and the
+   * manifest (CheckpointManifest); see doc/checkpoint.md.
+   *
+   * A new checkpoint is written into FOLDER.new; once its manifest is on
+   * disk, the previous FOLDER.old is removed, FOLDER becomes FOLDER.old and
+   * FOLDER.new becomes FOLDER. At every moment one of the three names holds
+   * a complete checkpoint, and the previous complete one is kept as a
+   * fallback for a damaged newest one.
+   *
+   * The parameters that define the problem (every entry except the sections
+   * Output, Checkpoint and Solver and the entry Time/End time) are recorded
+   * in the checkpoint, and a run resumes only with the same values.
+   */
+  class Checkpointing
+  {
+  public:
+    /// What to do at the end of a step.
+    struct Decision
+    {
+      bool write = false;
+      /// Stop after writing: a signal arrived on some rank.
+      bool stop = false;
+      /// That signal (the largest number if ranks differ).
+      int signal = 0;
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Read the section and record the parameters that define the problem.
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether this run continues from a checkpoint.
+    bool
+    resume() const;
+
+    /// Whether signals stop the run with a checkpoint.
+    /// Whether checkpoints are written every M steps or S seconds.
+    bool
+    writes_periodically() const;
+
+    bool
+    stops_on_signal() const;
+
+    /// The folder of the current checkpoint.
+    const std::string &
+    folder() const;
+
+    /// The parameters that define the problem, "Section/Entry" -> value.
+    const std::map<std::string, std::string> &
+    problem_parameters() const;
+
+    /**
+     * Collective, once at the end of every step @p n of @p n_steps: write
+     * every Checkpoint/Every steps steps and when Checkpoint/Every seconds
+     * have passed since the last checkpoint (or the start; measured on rank
+     * 0), and write and stop when a signal arrived on any rank (unless the
+     * run is complete anyway). All ranks get the same answer.
+     */
+    Decision
+    decide(const unsigned int n,
+           const unsigned int n_steps,
+           const MPI_Comm     communicator);
+
+    /**
+     * Collective: make FOLDER.new empty and return its name; the fields are
+     * then saved into it.
+     */
+    std::string
+    start_writing(const MPI_Comm communicator) const;
+
+    /**
+     * Collective: rank 0 writes @p metadata and the manifest into
+     * FOLDER.new and rotates the folders as described above; every rank
+     * throws if that failed. Restarts the clock of Every seconds.
+     */
+    void
+    finish_writing(const CheckpointMetadata &metadata,
+                   const MPI_Comm            communicator);
+
+    /**
+     * Collective: the newest complete checkpoint among FOLDER, FOLDER.new
+     * and FOLDER.old, checked against its manifest before anything reads it.
+     * Says on @p out when it uses another than FOLDER and why. Throws a
+     * message naming the folder and the damaged file if there is none.
+     */
+    CheckpointMetadata
+    find_checkpoint(const MPI_Comm communicator, ConditionalOStream &out) const;
+
+    /**
+     * Throw a message listing the entries that differ if @p metadata was
+     * written by a run of another problem.
+     */
+    void
+    check_compatibility(const CheckpointMetadata &metadata) const;
+
+  private:
+    unsigned int every_steps   = 0;
+    double       every_seconds = 0;
+    bool         resume_run    = false;
+    bool         catch_signals = true;
+    std::string  checkpoint_folder;
+
+    std::map<std::string, std::string>    parameters;
+    std::chrono::steady_clock::time_point last_checkpoint
+      = std::chrono::steady_clock::now();
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,429 @@
+// Section "Checkpoint": the schedule of checkpoints, stopping on a signal, and
+// putting a checkpoint in place and finding it again.
+#include <vpcontact/checkpointing.h>
+#include <vpcontact/input_error.h>
+#include <vpcontact/output_writer.h>
+#include <vpcontact/parameter_listing.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace VPContact
+{
+  namespace
+  {
+    // The one piece of global state a signal handler may touch: the number
+    // of the signal that arrived (an async-signal-safe store).
+    volatile std::sig_atomic_t stop_signal = 0;
+
+    void
+    record_stop_signal(const int signal)
+    {
+      stop_signal = signal;
+    }
+
+    // Parameters that may change between a run and its resumption: where
+    // and how the output goes, the linear solver (a tolerance changes the
+    // result only at the level of that tolerance), and the end time (a
+    // finished run may be continued further).
+    bool
+    may_change_on_resume(const std::string &entry)
+    {
+      for (const std::string section : {"Output/", "Checkpoint/", "Solver/"})
+        if (entry.rfind(section, 0) == 0)
+          return true;
+      return entry == "Time/End time";
+    }
+  } // namespace
+
+
+
+  StopSignalCatcher::StopSignalCatcher()
+  {
+    stop_signal = 0;
+    for (unsigned int i = 0; i < signals.size(); ++i)
+      {
+        sigaction(signals[i], nullptr, &previous[i]);
+        if (previous[i].sa_handler == SIG_IGN)
+          continue;
+        struct sigaction action = {};
+        action.sa_handler       = record_stop_signal;
+        sigemptyset(&action.sa_mask);
+        // SA_RESTART: a system call that the signal interrupts (MPI, file
+        // output) continues; SA_RESETHAND: the next signal acts as usual.
+        action.sa_flags = SA_RESTART | SA_RESETHAND;
+        installed[i]    = (sigaction(signals[i], &action, nullptr) == 0);
+      }
+  }
+
+
+
+  StopSignalCatcher::~StopSignalCatcher()
+  {
+    for (unsigned int i = 0; i < signals.size(); ++i)
+      if (installed[i])
+        sigaction(signals[i], &previous[i], nullptr);
+    stop_signal = 0;
+  }
+
+
+
+  int
+  StopSignalCatcher::caught_signal()
+  {
+    return stop_signal;
+  }
+
+
+
+  std::string
+  StopSignalCatcher::name(const int signal)
+  {
+    switch (signal)
+      {
+        case SIGINT:
+          return "SIGINT";
+        case SIGTERM:
+          return "SIGTERM";
+        case SIGUSR1:
+          return "SIGUSR1";
+        default:
+          return "signal " + std::to_string(signal);
+      }
+  }
+
+
+
+  void
+  Checkpointing::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpoint");
+    {
+      prm.declare_entry("Every steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write a checkpoint after every this many time steps "
+                        "(the last step included, so that a finished run can "
+                        "be continued to a later end time); 0: never.");
+      prm.declare_entry("Every seconds",
+                        "0",
+                        Patterns::Double(0),
+                        "Write a checkpoint at the end of the first step that "
+                        "ends this many seconds of wall-clock time (measured "
+                        "on rank 0) after the start of the run or the last "
+                        "checkpoint, e.g. 3600 for one every hour; 0: never.");
+      prm.declare_entry("Stop on signal",
+                        "true",
+                        Patterns::Bool(),
+                        "On SIGINT (Ctrl-C), SIGTERM (kill, queue systems) or "
+                        "SIGUSR1 (which Open MPI's mpirun forwards to the "
+                        "ranks), finish the current step, write a checkpoint "
+                        "and stop with exit status 75; a second signal stops "
+                        "at once. false: the signals act as usual.");
+      prm.declare_entry("Resume from checkpoint",
+                        "false",
+                        Patterns::Bool(),
+                        "Continue from the newest complete checkpoint in "
+                        "Folder instead of starting at t = 0 (the command "
+                        "line flag --resume sets this). The parameters of the "
+                        "problem must be those of the checkpointed run; the "
+                        "sections Output, Checkpoint and Solver and "
+                        "Time/End time may differ.");
+      prm.declare_entry("Folder",
+                        "",
+                        Patterns::Anything(),
+                        "Folder of the checkpoint; empty: 'checkpoint' inside "
+                        "Output/Directory. Next to it, FOLDER.new holds a "
+                        "checkpoint while it is written and FOLDER.old the "
+                        "previous one (the fallback if FOLDER is damaged). A "
+                        "relative path is relative to the working directory.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  Checkpointing::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    const std::string output_directory = prm.get("Directory");
+    prm.leave_subsection();
+    prm.enter_subsection("Checkpoint");
+    every_steps       = prm.get_integer("Every steps");
+    every_seconds     = prm.get_double("Every seconds");
+    catch_signals     = prm.get_bool("Stop on signal");
+    resume_run        = prm.get_bool("Resume from checkpoint");
+    checkpoint_folder = prm.get("Folder");
+    prm.leave_subsection();
+    if (checkpoint_folder.empty())
+      checkpoint_folder = output_directory + "/checkpoint";
+    while (checkpoint_folder.size() > 1 && checkpoint_folder.back() == '/')
+      checkpoint_folder.pop_back();
+
+    parameters.clear();
+    for (const auto &[entry, value] : parameter_values(prm))
+      if (!may_change_on_resume(entry))
+        parameters[entry] = value;
+  }
+
+
+
+  bool
+  Checkpointing::resume() const
+  {
+    return resume_run;
+  }
+
+
+
+  bool
+  Checkpointing::writes_periodically() const
+  {
+    return every_steps > 0 || every_seconds > 0;
+  }
+
+
+
+  bool
+  Checkpointing::stops_on_signal() const
+  {
+    return catch_signals;
+  }
+
+
+
+  const std::string &
+  Checkpointing::folder() const
+  {
+    return checkpoint_folder;
+  }
+
+
+
+  const std::map<std::string, std::string> &
+  Checkpointing::problem_parameters() const
+  {
+    return parameters;
+  }
+
+
+
+  Checkpointing::Decision
+  Checkpointing::decide(const unsigned int n,
+                        const unsigned int n_steps,
+                        const MPI_Comm     communicator)
+  {
+    // One reduction per step: the signal seen by any rank, and rank 0's
+    // clock (the ranks' clocks need not agree, their decision must).
+    const bool rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
+    const double elapsed = std::chrono::duration<double>(
+                             std::chrono::steady_clock::now() - last_checkpoint)
+                             .count();
+    const int time_due
+      = (rank_zero && every_seconds > 0 && elapsed >= every_seconds) ? 1 : 0;
+    const int local[2]  = {StopSignalCatcher::caught_signal(), time_due};
+    int       global[2] = {0, 0};
+    const int ierr
+      = MPI_Allreduce(local, global, 2, MPI_INT, MPI_MAX, communicator);
+    AssertThrowMPI(ierr);
+
+    Decision decision;
+    decision.signal = global[0];
+    decision.stop   = (decision.signal != 0 && n < n_steps);
+    decision.write  = decision.stop || global[1] == 1
+                     || (every_steps > 0 && n % every_steps == 0);
+    return decision;
+  }
+
+
+
+  std::string
+  Checkpointing::start_writing(const MPI_Comm communicator) const
+  {
+    const std::string new_folder = checkpoint_folder + ".new";
+    std::string       problem;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        // A leftover of a run that stopped while writing is incomplete.
+        std::error_code error;
+        std::filesystem::remove_all(new_folder, error);
+        if (!error)
+          std::filesystem::create_directories(new_folder, error);
+        if (error)
+          problem = error.message();
+      }
+    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    AssertThrow(problem.empty(),
+                ExcMessage(parameter_message(
+                  "Checkpoint/Folder",
+                  checkpoint_folder,
+                  "cannot create the folder " + new_folder + " (" + problem
+                    + "). Give a folder that can be written.")));
+    return new_folder;
+  }
+
+
+
+  void
+  Checkpointing::finish_writing(const CheckpointMetadata &metadata,
+                                const MPI_Comm            communicator)
+  {
+    const std::string new_folder = checkpoint_folder + ".new";
+    const std::string old_folder = checkpoint_folder + ".old";
+    std::string       problem;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      try
+        {
+          write_file_atomically(new_folder + "/checkpoint.json",
+                                metadata.to_json());
+          CheckpointManifest::write(new_folder);
+          // The manifest is on disk: the new checkpoint is complete. Only
+          // now may the one before the previous go.
+          std::filesystem::remove_all(old_folder);
+          if (std::filesystem::exists(checkpoint_folder))
+            std::filesystem::rename(checkpoint_folder, old_folder);
+          std::filesystem::rename(new_folder, checkpoint_folder);
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          problem = Utilities::trim(info.str());
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
+    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    AssertThrow(problem.empty(),
+                ExcMessage("Writing the checkpoint " + checkpoint_folder
+                           + " failed: " + problem
+                           + " The previous checkpoint, if any, is intact."));
+    last_checkpoint = std::chrono::steady_clock::now();
+  }
+
+
+
+  CheckpointMetadata
+  Checkpointing::find_checkpoint(const MPI_Comm      communicator,
+                                 ConditionalOStream &out) const
+  {
+    // Rank 0 examines the candidates, newest name first, and tells the
+    // others which one to read (or why none). Nothing is handed to p4est
+    // before its manifest has been checked.
+    const std::vector<std::string> candidates = {checkpoint_folder,
+                                                 checkpoint_folder + ".new",
+                                                 checkpoint_folder + ".old"};
+    std::vector<std::string>       verdict(4); // error, notes, folder, metadata
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::map<std::string, std::string> problems;
+        int                                chosen = -1;
+        CheckpointMetadata                 newest;
+        for (unsigned int i = 0; i < candidates.size(); ++i)
+          {
+            if (!std::filesystem::is_directory(candidates[i]))
+              continue;
+            std::string problem = CheckpointManifest::check(candidates[i]);
+            CheckpointMetadata metadata;
+            if (problem.empty())
+              try
+                {
+                  std::ifstream      in(candidates[i] + "/checkpoint.json");
+                  std::ostringstream text;
+                  text << in.rdbuf();
+                  metadata = CheckpointMetadata::from_json(text.str());
+                }
+              catch (const std::exception &e)
+                {
+                  problem = "its checkpoint.json cannot be read: "
+                            + std::string(e.what());
+                }
+            if (!problem.empty())
+              problems[candidates[i]] = problem;
+            else if (chosen < 0 || metadata.step > newest.step)
+              {
+                chosen = i;
+                newest = metadata;
+              }
+          }
+
+        if (chosen < 0 && problems.empty())
+          verdict[0] = parameter_message(
+            "Checkpoint/Resume from checkpoint",
+            "true",
+            "there is no checkpoint in " + checkpoint_folder
+              + " (nor .new or .old next to it). Check Output/Directory and "
+                "Checkpoint/Folder, or start the run without resuming.");
+        else if (chosen < 0)
+          {
+            verdict[0] = parameter_message("Checkpoint/Resume from checkpoint",
+                                           "true",
+                                           "no complete checkpoint is left in "
+                                             + checkpoint_folder + ":");
+            for (const auto &[folder, problem] : problems)
+              verdict[0] += "\n  " + folder + ": " + problem;
+            verdict[0] += "\nStart the run afresh without resuming.";
+          }
+        else
+          {
+            for (const auto &[folder, problem] : problems)
+              verdict[1] += "Checkpoint: " + folder
+                            + " is not usable: " + problem + ".\n";
+            if (chosen != 0)
+              verdict[1] += "Checkpoint: resuming from " + candidates[chosen]
+                            + " (step " + std::to_string(newest.step)
+                            + ") instead of " + checkpoint_folder + ".\n";
+            verdict[2] = candidates[chosen];
+            verdict[3] = newest.to_json();
+          }
+      }
+    verdict = Utilities::MPI::broadcast(communicator, verdict, 0);
+    AssertThrow(verdict[0].empty(), ExcMessage(verdict[0]));
+    out << verdict[1];
+    CheckpointMetadata metadata = CheckpointMetadata::from_json(verdict[3]);
+    metadata.folder             = verdict[2];
+    return metadata;
+  }
+
+
+
+  void
+  Checkpointing::check_compatibility(const CheckpointMetadata &metadata) const
+  {
+    // Every entry that is in either list and differs, with both values.
+    std::string differences;
+    const auto  value_in = [](const auto &map, const std::string &entry) {
+      const auto found = map.find(entry);
+      return found == map.end() ? std::string("(not set)") :
+                                   "'" + found->second + "'";
+    };
+    std::set<std::string> entries;
+    for (const auto &[entry, value] : parameters)
+      entries.insert(entry);
+    for (const auto &[entry, value] : metadata.parameters)
+      if (!may_change_on_resume(entry))
+        entries.insert(entry);
+    for (const auto &entry : entries)
+      if (value_in(parameters, entry) != value_in(metadata.parameters, entry))
+        differences
+          += "\n  " + entry + " = " + value_in(metadata.parameters, entry)
+             + " in the checkpoint, " + value_in(parameters, entry) + " now";
+    AssertThrow(differences.empty(),
+                ExcMessage(
+                  "Checkpoint/Resume from checkpoint = true: the checkpoint "
+                  "in "
+                  + metadata.folder
+                  + " was written by a run of another problem (mesh, "
+                    "discretisation or physics):"
+                  + differences
+                  + "\nResume with the parameters of that run (only the "
+                    "sections Output, Checkpoint and Solver and Time/End time "
+                    "may change), or start afresh without resuming."));
+  }
+} // namespace VPContact

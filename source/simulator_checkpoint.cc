@@ -1,0 +1,227 @@
+// The simulator's checkpoints: the state of a step written with the
+// distributed mesh, and a run resumed from it (see doc/checkpoint.md).
+#include <vpcontact/checkpoint_fields.h>
+#include <vpcontact/input_error.h>
+#include <vpcontact/simulator.h>
+
+namespace VPContact
+{
+  namespace
+  {
+    // The vectors in a checkpoint, in this order: u_n and zeta_n (the
+    // solution), du_n (the start vector of the next solve) and the active
+    // sets as an indicator vector (FrictionActiveSet::write_state() and
+    // DamageBounds::write_state() use different components).
+    constexpr unsigned int n_checkpoint_vectors = 3;
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint(const unsigned int n)
+  {
+    TimerOutput::Scope t(computing_timer, "Checkpoint");
+    const std::string  folder = checkpointing.start_writing(mpi_communicator);
+
+    // The state that step n + 1 starts from. The stress predictor and the
+    // damage source at the quadrature points are recomputed by the next
+    // assembly, but are stored with the stress: the resumed state is then
+    // the same bits as the uninterrupted one.
+    TrilinosWrappers::MPI::Vector sets_owned(locally_owned_dofs,
+                                             mpi_communicator);
+    if (friction_active)
+      friction_active_set.write_state(sets_owned);
+    if (damage_model.is_active())
+      damage_bounds.write_state(sets_owned);
+    TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
+                                       locally_relevant_dofs,
+                                       mpi_communicator);
+    sets = sets_owned;
+    TrilinosWrappers::MPI::Vector last_increment(locally_owned_dofs,
+                                                 locally_relevant_dofs,
+                                                 mpi_communicator);
+    last_increment = increment_owned;
+    const std::vector<const TrilinosWrappers::MPI::Vector *> vectors
+      = {&solution, &last_increment, &sets};
+    AssertDimension(vectors.size(), n_checkpoint_vectors);
+    CheckpointFields::save(triangulation,
+                           dof_handler,
+                           vectors,
+                           stress_history,
+                           quadrature.size(),
+                           folder + "/mesh");
+
+    CheckpointMetadata metadata;
+    metadata.step = n;
+    metadata.time = time_discretization.time(n);
+    // The refinement cycle goes here once the time loop has cycles; a
+    // resumed run would then also start its loop at this cycle.
+    metadata.cycle          = 0;
+    metadata.n_ranks        = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    metadata.n_coarse_cells = triangulation.n_global_coarse_cells();
+    metadata.n_active_cells = triangulation.n_global_active_cells();
+    metadata.n_dofs         = dof_handler.n_dofs();
+    metadata.statistics_csv = statistics.to_csv();
+    metadata.field_outputs  = output_writer.field_outputs();
+    metadata.counters       = verification.running_maxima();
+    metadata.counters["max_friction_violation"] = max_friction_violation;
+    metadata.counters["max_damage_violation"]   = max_damage_violation;
+    metadata.parameters = checkpointing.problem_parameters();
+    checkpointing.finish_writing(metadata, mpi_communicator);
+    pcout << "  checkpoint of step " << n << " written to "
+          << checkpointing.folder() << std::endl;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::checkpoint_after_step(const unsigned int n)
+  {
+    const auto decision = checkpointing.decide(n,
+                                               time_discretization.n_steps(),
+                                               mpi_communicator);
+    if (decision.write)
+      write_checkpoint(n);
+    if (!decision.stop)
+      return false;
+
+    stopped_on_signal = true;
+    pcout << "\nStopped on " << StopSignalCatcher::name(decision.signal)
+          << " at the end of step " << n << " of "
+          << time_discretization.n_steps()
+          << " (t = " << time_discretization.time(n) << "); the checkpoint in "
+          << checkpointing.folder()
+          << " holds this state.\nTo continue the run, start it again with "
+             "--resume (vpcontact --resume SCENE.prm) or with "
+             "Checkpoint/Resume from checkpoint = true. Exit status "
+          << exit_status_stopped_for_resume << '.' << std::endl;
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::load_checkpoint_mesh()
+  {
+    // The newest complete checkpoint, checked file by file before p4est
+    // reads it, and checked to be of this problem.
+    resumed_checkpoint = checkpointing.find_checkpoint(mpi_communicator, pcout);
+    checkpointing.check_compatibility(resumed_checkpoint);
+    const std::string folder = resumed_checkpoint.folder;
+    VPContactCheckParameter(
+      resumed_checkpoint.step < time_discretization.n_steps(),
+      "Time/End time",
+      time_discretization.end_time(),
+      "the checkpoint in " + folder + " is at step "
+        + std::to_string(resumed_checkpoint.step)
+        + " (t = " + to_text(resumed_checkpoint.time) + "), and this run has "
+        + std::to_string(time_discretization.n_steps())
+        + " steps: nothing is left to do. Raise the end time to continue the "
+          "run.");
+
+    // load() refines the coarse mesh as the checkpoint's was, and
+    // partitions it among the ranks of this run.
+    geometry.create_coarse_mesh(triangulation);
+    AssertThrow(triangulation.n_global_coarse_cells()
+                  == resumed_checkpoint.n_coarse_cells,
+                ExcMessage(
+                  "The checkpoint in " + folder + " has "
+                  + std::to_string(resumed_checkpoint.n_coarse_cells)
+                  + " coarse cells, the mesh of the Geometry section "
+                    "has "
+                  + std::to_string(triangulation.n_global_coarse_cells())
+                  + ": has the mesh file changed? Resume with the "
+                    "mesh of the checkpointed run."));
+    triangulation.load(folder + "/mesh");
+    AssertThrow(triangulation.n_global_active_cells()
+                  == resumed_checkpoint.n_active_cells,
+                ExcMessage("The mesh loaded from " + folder
+                           + " does not have the number of cells the "
+                             "checkpoint records."));
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::restore_checkpoint()
+  {
+    TimerOutput::Scope t(computing_timer, "Checkpoint");
+    const auto        &checkpoint = resumed_checkpoint;
+    const std::string &folder     = checkpoint.folder;
+    AssertThrow(dof_handler.n_dofs() == checkpoint.n_dofs,
+                ExcMessage("The checkpoint in " + folder + " has "
+                           + std::to_string(checkpoint.n_dofs)
+                           + " degrees of freedom, this run "
+                           + std::to_string(dof_handler.n_dofs()) + "."));
+
+    // The fields, in the order write_checkpoint() saved them. The vectors
+    // come back without ghosts; the ghosted copies are made from them.
+    TrilinosWrappers::MPI::Vector sets_owned(locally_owned_dofs,
+                                             mpi_communicator);
+    const std::vector<TrilinosWrappers::MPI::Vector *> vectors
+      = {&solution_owned, &increment_owned, &sets_owned};
+    AssertDimension(vectors.size(), n_checkpoint_vectors);
+    CheckpointFields::load(triangulation,
+                           dof_handler,
+                           vectors,
+                           stress_history,
+                           quadrature.size());
+    solution  = solution_owned;
+    increment = increment_owned;
+    if (damage_model.is_active())
+      {
+        damage_owned = solution_owned;
+        damage       = damage_owned;
+      }
+
+    // The active sets, and the constraints as the uninterrupted run has
+    // them after step n: the stick nodes of the restored set (they shape the
+    // matrix, which run() assembles next), and prescribed displacements with
+    // the increment g(t_n) - u_n, zero at the end of a step. The explicit
+    // step rebuilds them for its own time anyway; the implicit step starts
+    // its first Newton correction from them.
+    TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
+                                       locally_relevant_dofs,
+                                       mpi_communicator);
+    sets = sets_owned;
+    if (friction_active)
+      friction_active_set.read_state(sets);
+    if (damage_model.is_active())
+      damage_bounds.read_state(sets);
+    make_constraints(time_discretization.time(checkpoint.step), &solution);
+
+    // What the run has written so far, as it stood at the checkpoint: the
+    // table and the .pvd record continue from there, whatever the stopped
+    // run wrote after it.
+    statistics.read_csv(checkpoint.statistics_csv);
+    output_writer.write_statistics(statistics, mpi_communicator);
+    output_writer.restore_field_outputs(checkpoint.field_outputs,
+                                        mpi_communicator);
+    verification.restore_running_maxima(checkpoint.counters);
+    const auto counter = [&](const std::string &name) {
+      const auto found = checkpoint.counters.find(name);
+      AssertThrow(found != checkpoint.counters.end(),
+                  ExcMessage("The checkpoint in " + folder + " has no counter "
+                             + name + " in its checkpoint.json."));
+      return found->second;
+    };
+    max_friction_violation = counter("max_friction_violation");
+    max_damage_violation   = counter("max_damage_violation");
+
+    pcout << "Resuming from the checkpoint in " << folder << ": step "
+          << checkpoint.step << ", t = " << checkpoint.time;
+    if (!output_writer.deterministic_screen_output())
+      pcout << " (written on " << checkpoint.n_ranks << " MPI rank(s))";
+    pcout << '\n' << std::endl;
+    return checkpoint.step;
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace VPContact
