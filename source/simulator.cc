@@ -98,17 +98,16 @@ namespace VPContact
     checkpointing.parse_parameters(prm);
     // A checkpoint holds one run's state; the state of a sequence of cycles
     // (the table so far, the indicators of the current cycle) is not in it.
-    AssertThrow(mesh_refinement.n_cycles() == 1
-                  || (!checkpointing.writes_periodically()
-                      && !checkpointing.resume()),
-                ExcMessage(
-                  "Checkpoint: runs with refinement cycles (Mesh "
-                  "refinement/Number of cycles = "
-                  + std::to_string(mesh_refinement.n_cycles())
-                  + ") are not checkpointed in this release. Set "
-                    "Checkpoint/Every steps = 0, Checkpoint/Every seconds = 0 "
-                    "and Resume from checkpoint = false, or run the mesh of "
-                    "one cycle as a single run."));
+    AssertThrow(
+      mesh_refinement.n_cycles() == 1
+        || (!checkpointing.writes_periodically() && !checkpointing.resume()),
+      ExcMessage("Checkpoint: runs with refinement cycles (Mesh "
+                 "refinement/Number of cycles = "
+                 + std::to_string(mesh_refinement.n_cycles())
+                 + ") are not checkpointed in this release. Set "
+                   "Checkpoint/Every steps = 0, Checkpoint/Every seconds = 0 "
+                   "and Resume from checkpoint = false, or run the mesh of "
+                   "one cycle as a single run."));
     check_stability_limits();
   }
 
@@ -208,10 +207,10 @@ namespace VPContact
       }
     // From here on SIGINT/SIGTERM/SIGUSR1 stop a single run at the end of a
     // step, with a checkpoint (runs with cycles are not checkpointed).
-    const auto signal_catcher =
-      (checkpointing.stops_on_signal() && mesh_refinement.n_cycles() == 1 ?
-         std::make_unique<StopSignalCatcher>() :
-         nullptr);
+    const auto signal_catcher
+      = (checkpointing.stops_on_signal() && mesh_refinement.n_cycles() == 1 ?
+           std::make_unique<StopSignalCatcher>() :
+           nullptr);
     for (unsigned int n = first_step; n <= time_discretization.n_steps(); ++n)
       {
         Timer step_timer;

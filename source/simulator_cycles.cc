@@ -29,7 +29,7 @@ namespace VPContact
     time_discretization.set_halvings(
       mesh_refinement.time_step_halvings(first_mesh_size, h));
 
-    statistics                 = Statistics();
+    statistics = Statistics();
     // The active sets refer to degrees of freedom of the previous mesh;
     // constraints built before their setup must not see them.
     friction_active_set        = FrictionActiveSet<dim>();

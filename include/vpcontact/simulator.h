@@ -4,8 +4,8 @@
 #define vpcontact_simulator_h
 
 #include <vpcontact/boundary_conditions.h>
-#include <vpcontact/convergence_table.h>
 #include <vpcontact/checkpointing.h>
+#include <vpcontact/convergence_table.h>
 #include <vpcontact/damage_bounds.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/elastic_material.h>
@@ -277,8 +277,8 @@ namespace VPContact
     unsigned int current_cycle  = 0;
     /// Time spent on comparisons and snapshots in this cycle, which is not
     /// counted as the run's time.
-    double diagnostics_time = 0;
-    Checkpointing          checkpointing;
+    double        diagnostics_time = 0;
+    Checkpointing checkpointing;
     /// The checkpoint a resumed run reads (found by load_checkpoint_mesh()).
     CheckpointMetadata resumed_checkpoint;
     /// Set when a signal stopped the run after a checkpoint.
