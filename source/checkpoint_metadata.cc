@@ -1,5 +1,9 @@
 // The metadata of a checkpoint as JSON, and its manifest of file sizes and
 // checksums.
+// Boost's property tree includes boost/bind.hpp, which warns about its global
+// placeholders unless told that they are expected.
+#define BOOST_BIND_GLOBAL_PLACEHOLDERS
+
 #include <vpcontact/checkpoint_metadata.h>
 
 #include <deal.II/base/exceptions.h>
