@@ -14,12 +14,17 @@ namespace VPContact
     {
       prm.declare_entry("Linear solver",
                         "CG with AMG",
-                        Patterns::Selection("CG with AMG|direct"),
+                        Patterns::Selection("CG with AMG|direct|MUMPS"),
                         "'CG with AMG': conjugate gradients preconditioned by "
                         "Trilinos ML algebraic multigrid, scales to large "
                         "meshes and many ranks. 'direct': Trilinos Amesos KLU "
                         "factorization, exact to round-off, for small meshes "
-                        "(it gathers the matrix).");
+                        "(it gathers the matrix). 'MUMPS': the multifrontal "
+                        "MUMPS factorization through Amesos (distributed), "
+                        "for medium meshes where one factorization per "
+                        "matrix, reused by every step, beats CG; see "
+                        "doc/performance.md. Direct factorizations are "
+                        "recomputed whenever the stick set changes.");
       prm.declare_entry("Relative tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
@@ -40,8 +45,9 @@ namespace VPContact
   LinearSolver::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    solver_method = (prm.get("Linear solver") == "direct" ? Method::direct :
-                                                            Method::cg_amg);
+    const std::string method = prm.get("Linear solver");
+    solver_method = (method == "CG with AMG" ? Method::cg_amg : Method::direct);
+    direct_package     = (method == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
     relative_tolerance = prm.get_double("Relative tolerance");
     max_iterations     = prm.get_integer("Maximum linear iterations");
     prm.leave_subsection();
@@ -76,7 +82,8 @@ namespace VPContact
         direct_control = std::make_unique<SolverControl>(1, 0);
         direct         = std::make_unique<TrilinosWrappers::SolverDirect>(
           *direct_control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         direct_package));
         direct->initialize(matrix);
       }
   }

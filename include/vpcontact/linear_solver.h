@@ -69,7 +69,9 @@ namespace VPContact
     iteration_limit() const;
 
   private:
-    Method       solver_method      = Method::cg_amg;
+    Method solver_method = Method::cg_amg;
+    /// The Amesos package of the direct method: Amesos_Klu or Amesos_Mumps.
+    std::string  direct_package     = "Amesos_Klu";
     double       relative_tolerance = 1e-10;
     unsigned int max_iterations     = 1000;
 
