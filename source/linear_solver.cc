@@ -60,9 +60,20 @@ namespace VPContact
 
 
   void
+  LinearSolver::clear()
+  {
+    direct.reset();
+    direct_control.reset();
+    amg.reset();
+  }
+
+
+
+  void
   LinearSolver::initialize(const TrilinosWrappers::SparseMatrix &matrix,
                            const std::vector<std::vector<bool>> &constant_modes)
   {
+    clear();
     if (solver_method == Method::cg_amg)
       {
         // The settings of step-42 for elasticity: a symmetric problem

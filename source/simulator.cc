@@ -114,6 +114,16 @@ namespace VPContact
 
 
   template <int dim>
+  Simulator<dim>::~Simulator()
+  {
+    // Members are destroyed in reverse order of declaration, the matrices
+    // before the linear solver; a factorization (MUMPS) must go first.
+    linear_solver.clear();
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::check_stability_limits() const
   {

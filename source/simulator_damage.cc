@@ -112,6 +112,7 @@ namespace VPContact
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
+    damage_amg.clear(); // it refers to the matrix of the last mesh
     damage_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,

@@ -83,6 +83,7 @@ namespace VPContact
                                                locally_owned_dofs,
                                                mpi_communicator,
                                                locally_relevant_dofs);
+    linear_solver.clear(); // it refers to the matrix of the last mesh
     stiffness_matrix.reinit(locally_owned_dofs,
                             locally_owned_dofs,
                             dsp,

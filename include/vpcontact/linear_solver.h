@@ -44,6 +44,14 @@ namespace VPContact
      * @p constant_modes (one bool vector per displacement component) help
      * AMG to coarsen a vector-valued problem, as in step-42.
      */
+    /**
+     * Release the preconditioner or factorization. Both refer to the matrix
+     * they were built from (MUMPS even when it is destroyed), so this must
+     * happen before that matrix is re-initialised or destroyed.
+     */
+    void
+    clear();
+
     void
     initialize(const TrilinosWrappers::SparseMatrix &matrix,
                const std::vector<std::vector<bool>> &constant_modes);

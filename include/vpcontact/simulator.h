@@ -84,6 +84,9 @@ namespace VPContact
               const std::string &parameter_directory,
               const MPI_Comm     communicator);
 
+    /// Releases the linear solver before the matrix it refers to.
+    ~Simulator();
+
     /// Run the scene from t = 0 (or from a checkpoint) to T, once per
     /// refinement cycle.
     void
