@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace VPContact
 {
@@ -109,6 +110,75 @@ namespace VPContact
         return sigma;
       }
     };
+
+    // The volume of a cell of a snapshot (Gauss rule, exact for Q1 maps).
+    template <int dim>
+    double
+    volume(const CellFields<dim> &cell)
+    {
+      const QGauss<dim> gauss(2);
+      double            v = 0;
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        v += determinant(cell.jacobian(gauss.point(q))) * gauss.weight(q);
+      return v;
+    }
+
+    // The cell of the run that contains reference cell C: the longest
+    // prefix of C's path of children that is a cell of the run. Returns
+    // the run's index and the length of that prefix, or no index.
+    template <int dim>
+    std::pair<std::optional<unsigned int>, unsigned int>
+    containing_cell(const std::map<CellId::binary_type, unsigned int> &cells,
+                    const CellId                                      &id)
+    {
+      const auto path = id.get_child_indices();
+      for (unsigned int depth = path.size() + 1; depth-- > 0;)
+        {
+          const CellId prefix(id.get_coarse_cell_id(), depth, path.data());
+          const auto   found = cells.find(prefix.template to_binary<dim>());
+          if (found != cells.end())
+            return {found->second, depth};
+        }
+      return {std::nullopt, 0};
+    }
+
+    // Add the squared errors on reference cell C (inside run cell A, whose
+    // path from A is path[depth..]) to @p squares, and the distance between
+    // C's vertices and their images through A's map to @p mismatch.
+    template <int dim>
+    void
+    add_cell_errors(const CellFields<dim>               &fine,
+                    const CellFields<dim>               &coarse,
+                    const ArrayView<const std::uint8_t> &path,
+                    const unsigned int                   depth,
+                    double                               squares[3],
+                    double                              &mismatch)
+    {
+      const auto to_coarse = [&](Point<dim> p) {
+        for (unsigned int i = path.size(); i > depth; --i)
+          p = GeometryInfo<dim>::child_to_cell_coordinates(p, path[i - 1]);
+        return p;
+      };
+      for (unsigned int v = 0; v < Snapshot<dim>::n_vertices; ++v)
+        mismatch = std::max(
+          mismatch,
+          coarse.position(to_coarse(GeometryInfo<dim>::unit_cell_vertex(v)))
+            .distance(fine.s.vertex(fine.c, v)));
+
+      const QGauss<dim> gauss(2);
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        {
+          const Point<dim> p   = gauss.point(q);
+          const Point<dim> p_A = to_coarse(p);
+          const double JxW = determinant(fine.jacobian(p)) * gauss.weight(q);
+          const auto   e_strain = fine.strain(p) - coarse.strain(p_A);
+          const auto   e_stress = fine.s.stress(fine.c, q) - coarse.stress(p_A);
+          const double e_damage = fine.damage(p) - coarse.damage(p_A);
+          squares[0] += (e_strain * e_strain) * JxW;
+          squares[1] += (e_stress * e_stress) * JxW;
+          squares[2] += e_damage * e_damage * JxW;
+        }
+    }
   } // namespace
 
 
@@ -130,68 +200,29 @@ namespace VPContact
     for (unsigned int a = 0; a < run.n_cells(); ++a)
       run_cells[run.id(a)] = a;
 
-    const QGauss<dim> gauss(2);
-    double            squares[3] = {0, 0, 0};
-    double            covered = 0, total = 0, run_volume = 0, mismatch = 0;
+    // Every reference cell in the run cell that contains it; the volumes
+    // tell whether the reference covers the run.
+    double squares[3] = {0, 0, 0};
+    double covered = 0, total = 0, run_volume = 0, mismatch = 0;
     for (unsigned int c = 0; c < reference.n_cells(); ++c)
       {
         const CellFields<dim> fine{reference, c};
-        double                volume = 0;
-        for (unsigned int q = 0; q < gauss.size(); ++q)
-          volume
-            += determinant(fine.jacobian(gauss.point(q))) * gauss.weight(q);
-        total += volume;
-
-        // The run's cell that contains C: the longest prefix of C's path of
-        // children that is a cell of the run.
+        const double          v = volume(fine);
+        total += v;
         const CellId id(reference.id(c));
-        const auto   path  = id.get_child_indices();
-        auto         found = run_cells.end();
-        unsigned int depth = path.size() + 1;
-        while (depth > 0 && found == run_cells.end())
-          {
-            --depth;
-            found = run_cells.find(
-              CellId(id.get_coarse_cell_id(), depth, path.data())
-                .template to_binary<dim>());
-          }
-        if (found == run_cells.end())
+        const auto [a, depth] = containing_cell<dim>(run_cells, id);
+        if (!a)
           continue;
-        covered += volume;
-        const CellFields<dim> coarse{run, found->second};
-        const auto            to_coarse = [&](Point<dim> p) {
-          for (unsigned int i = path.size(); i > depth; --i)
-            p = GeometryInfo<dim>::child_to_cell_coordinates(p, path[i - 1]);
-          return p;
-        };
-
-        // Both meshes must place C at the same spot.
-        for (unsigned int v = 0; v < Snapshot<dim>::n_vertices; ++v)
-          mismatch = std::max(
-            mismatch,
-            coarse.position(to_coarse(GeometryInfo<dim>::unit_cell_vertex(v)))
-              .distance(reference.vertex(c, v)));
-
-        for (unsigned int q = 0; q < gauss.size(); ++q)
-          {
-            const Point<dim> p   = gauss.point(q);
-            const Point<dim> p_A = to_coarse(p);
-            const double JxW = determinant(fine.jacobian(p)) * gauss.weight(q);
-            const auto   e_strain = fine.strain(p) - coarse.strain(p_A);
-            const auto   e_stress = reference.stress(c, q) - coarse.stress(p_A);
-            const double e_damage = fine.damage(p) - coarse.damage(p_A);
-            squares[0] += (e_strain * e_strain) * JxW;
-            squares[1] += (e_stress * e_stress) * JxW;
-            squares[2] += e_damage * e_damage * JxW;
-          }
+        covered += v;
+        add_cell_errors(fine,
+                        CellFields<dim>{run, *a},
+                        id.get_child_indices(),
+                        depth,
+                        squares,
+                        mismatch);
       }
     for (unsigned int a = 0; a < run.n_cells(); ++a)
-      {
-        const CellFields<dim> cell{run, a};
-        for (unsigned int q = 0; q < gauss.size(); ++q)
-          run_volume
-            += determinant(cell.jacobian(gauss.point(q))) * gauss.weight(q);
-      }
+      run_volume += volume(CellFields<dim>{run, a});
 
     covered            = Utilities::MPI::sum(covered, communicator);
     run_volume         = Utilities::MPI::sum(run_volume, communicator);
