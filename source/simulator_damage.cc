@@ -131,6 +131,25 @@ namespace VPContact
                            locally_relevant_dofs,
                            mpi_communicator);
 
+    setup_mass_and_bounds();
+    interpolate_initial_damage();
+
+    // K = M_L/k + kappa A does not change while the mesh and k do: it is
+    // assembled and its AMG built once. The bounds are applied by masking
+    // (see solve_damage()), not by reassembly.
+    assemble_damage(true);
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic       = true;
+    data.constant_modes = all_constant_modes;
+    damage_amg.initialize(damage_matrix, data);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_mass_and_bounds()
+  {
     // The lumped mass m_i = int psi_i: the mass matrix integrated with the
     // Gauss-Lobatto (trapezoidal) rule, which is diagonal for Q1. On
     // adaptive meshes it is condensed like the load: a hanging node hands
@@ -178,17 +197,6 @@ namespace VPContact
                         locally_owned_dofs,
                         lumped_mass,
                         mpi_communicator);
-
-    interpolate_initial_damage();
-
-    // K = M_L/k + kappa A does not change while the mesh and k do: it is
-    // assembled and its AMG built once. The bounds are applied by masking
-    // (see solve_damage()), not by reassembly.
-    assemble_damage(true);
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic       = true;
-    data.constant_modes = all_constant_modes;
-    damage_amg.initialize(damage_matrix, data);
   }
 
 

@@ -201,6 +201,8 @@ namespace VPContact
     void
     setup_damage();
     void
+    setup_mass_and_bounds();
+    void
     interpolate_initial_damage();
     std::pair<double, double>
     damage_range(const TrilinosWrappers::MPI::Vector &v) const;
