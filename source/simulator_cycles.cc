@@ -46,6 +46,7 @@ namespace VPContact
     max_error_sum              = 0;
     const double nan           = std::numeric_limits<double>::quiet_NaN();
     final_error                = ErrorNorms{nan, nan, nan};
+    verification.restore_running_maxima({}); // each cycle's summary is its own
     computing_timer.reset();
     error_indicator.reinit(triangulation);
   }
