@@ -176,15 +176,6 @@ namespace VPContact
 
 
   template <int dim>
-  typename MeshRefinement<dim>::Strategy
-  MeshRefinement<dim>::strategy() const
-  {
-    return refinement;
-  }
-
-
-
-  template <int dim>
   bool
   MeshRefinement<dim>::needs_indicators() const
   {

@@ -29,11 +29,7 @@ namespace VPContact
     time_discretization.set_halvings(
       mesh_refinement.time_step_halvings(first_mesh_size, h));
 
-    statistics = Statistics();
-    // The active sets refer to degrees of freedom of the previous mesh;
-    // constraints built before their setup must not see them.
-    friction_active_set        = FrictionActiveSet<dim>();
-    damage_bounds              = DamageBounds();
+    statistics                 = Statistics();
     last_linear_iterations     = 0;
     last_active_set_iterations = 0;
     last_damage_iterations     = 0;
@@ -138,7 +134,7 @@ namespace VPContact
 
 
   template <int dim>
-  double
+  void
   Simulator<dim>::add_reference_statistics(std::string       &line,
                                            const unsigned int n)
   {
@@ -155,7 +151,7 @@ namespace VPContact
     const bool compare
       = reference_solution.compares() && reference_solution.has_time(time);
     if (!write && !compare)
-      return 0.;
+      return;
 
     const Snapshot<dim> local = make_snapshot(time);
     if (write)
@@ -189,7 +185,6 @@ namespace VPContact
       }
     timer.stop();
     diagnostics_time += timer.wall_time();
-    return timer.wall_time();
   }
 
 

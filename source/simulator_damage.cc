@@ -97,7 +97,10 @@ namespace VPContact
   Simulator<dim>::setup_damage()
   {
     TimerOutput::Scope t(computing_timer, "Setup");
-    damage_dofs = relevant_dofs_of_components(dim, dim + 1);
+    // As in setup_dofs(): the bound sets of an earlier mesh must not enter
+    // the constraints built here before setup_mass_and_bounds().
+    damage_bounds = DamageBounds();
+    damage_dofs   = relevant_dofs_of_components(dim, dim + 1);
 
     // The sparsity pattern of M/k + kappa A without the bounds: every
     // displacement dof is constrained, so its rows hold only the diagonal.

@@ -59,6 +59,9 @@ namespace VPContact
   Simulator<dim>::setup_dofs()
   {
     TimerOutput::Scope t(computing_timer, "Setup");
+    // Sets of an earlier mesh (a previous refinement cycle) name degrees of
+    // freedom that no longer exist; the constraints below must not see them.
+    friction_active_set = FrictionActiveSet<dim>();
     dof_handler.distribute_dofs(fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);

@@ -91,8 +91,6 @@ namespace VPContact
 
     unsigned int
     n_cycles() const;
-    Strategy
-    strategy() const;
     /// Whether the run needs error indicators (adaptive, more than one
     /// cycle).
     bool

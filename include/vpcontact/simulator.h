@@ -148,7 +148,7 @@ namespace VPContact
     finish_cycle(const unsigned int cycle, const double wall_time);
     Snapshot<dim>
     make_snapshot(const double time) const;
-    double
+    void
     add_reference_statistics(std::string &line, const unsigned int n);
     void
     print_convergence_table() const;

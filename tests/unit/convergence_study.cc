@@ -24,15 +24,12 @@ namespace
   {
     Simulator<2>::declare_parameters(prm);
     prm.parse_input(SOURCE_DIR "/../../prm/paper_fig1.prm");
-    prm.enter_subsection("Geometry");
-    prm.set("Subdivisions", "4, 4");
-    prm.leave_subsection();
-    prm.enter_subsection("Initial state");
-    prm.set("Displacement and stress", "elastic equilibrium");
-    prm.leave_subsection();
-    prm.enter_subsection("Output");
-    prm.set("Output every", "0");
-    prm.leave_subsection();
+    set_entry(prm, "Geometry", "Subdivisions", "4, 4");
+    set_entry(prm,
+              "Initial state",
+              "Displacement and stress",
+              "elastic equilibrium");
+    set_entry(prm, "Output", "Output every", "0");
   }
 } // namespace
 
@@ -43,36 +40,20 @@ main(int argc, char **argv)
   {
     ParameterHandler prm;
     paper_scene_on_coarse_mesh(prm);
-    prm.enter_subsection("Geometry");
-    prm.set("Global refinements", "3");
-    prm.leave_subsection();
-    prm.enter_subsection("Time");
-    prm.set("Time step", "0.0125");
-    prm.leave_subsection();
-    prm.enter_subsection("Reference solution");
-    prm.set("Write snapshots", "true");
-    prm.set("Snapshot interval", "0.1");
-    prm.leave_subsection();
-    prm.enter_subsection("Output");
-    prm.set("Directory", "reference");
-    prm.leave_subsection();
+    set_entry(prm, "Geometry", "Global refinements", "3");
+    set_entry(prm, "Time", "Time step", "0.0125");
+    set_entry(prm, "Reference solution", "Write snapshots", "true");
+    set_entry(prm, "Reference solution", "Snapshot interval", "0.1");
+    set_entry(prm, "Output", "Directory", "reference");
     run_quietly<2>(prm, SOURCE_DIR "/../../prm");
   }
   {
     ParameterHandler prm;
     paper_scene_on_coarse_mesh(prm);
-    prm.enter_subsection("Time");
-    prm.set("Time step", "0.1");
-    prm.leave_subsection();
-    prm.enter_subsection("Mesh refinement");
-    prm.set("Number of cycles", "3");
-    prm.leave_subsection();
-    prm.enter_subsection("Reference solution");
-    prm.set("Compare with", "reference/reference");
-    prm.leave_subsection();
-    prm.enter_subsection("Output");
-    prm.set("Directory", "study");
-    prm.leave_subsection();
+    set_entry(prm, "Time", "Time step", "0.1");
+    set_entry(prm, "Mesh refinement", "Number of cycles", "3");
+    set_entry(prm, "Reference solution", "Compare with", "reference/reference");
+    set_entry(prm, "Output", "Directory", "study");
     run_quietly<2>(prm, SOURCE_DIR "/../../prm");
   }
 

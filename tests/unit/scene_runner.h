@@ -36,6 +36,18 @@ namespace VPContact
     std::cout.rdbuf(old);
   }
 
+  /// Set "Section/Entry" (one level of section) to @p value.
+  inline void
+  set_entry(ParameterHandler  &prm,
+            const std::string &section,
+            const std::string &entry,
+            const std::string &value)
+  {
+    prm.enter_subsection(section);
+    prm.set(entry, value);
+    prm.leave_subsection();
+  }
+
   /// The rows of a statistics.csv or convergence.csv file (empty cells,
   /// trailing ones included, read as 0).
   inline std::vector<std::map<std::string, double>>
