@@ -48,20 +48,17 @@ namespace VPContact
 
 
 
-  void
-  DamageBounds::add_constraints(
-    AffineConstraints<double>           &constraints,
+  std::vector<std::pair<types::global_dof_index, double>>
+  DamageBounds::held_changes(
     const TrilinosWrappers::MPI::Vector &old_damage) const
   {
+    std::vector<std::pair<types::global_dof_index, double>> held;
     for (unsigned int i = 0; i < dofs.size(); ++i)
-      if (status[i] != BoundStatus::free
-          && !constraints.is_constrained(dofs[i]))
-        {
-          constraints.add_line(dofs[i]);
-          constraints.set_inhomogeneity(
-            dofs[i],
-            (status[i] == BoundStatus::upper ? 1. : 0.) - old_damage(dofs[i]));
-        }
+      if (owned[i] && status[i] != BoundStatus::free)
+        held.emplace_back(dofs[i],
+                          (status[i] == BoundStatus::upper ? 1. : 0.)
+                            - old_damage(dofs[i]));
+    return held;
   }
 
 

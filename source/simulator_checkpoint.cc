@@ -33,7 +33,12 @@ namespace VPContact
     if (friction_active)
       friction_active_set.write_state(sets_owned);
     if (damage_model.is_active())
-      damage_bounds.write_state(sets_owned);
+      {
+        TrilinosWrappers::MPI::Vector bound_sets(damage_system.owned(),
+                                                 mpi_communicator);
+        damage_bounds.write_state(bound_sets);
+        damage_system.scatter(bound_sets, sets_owned);
+      }
     TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
                                        locally_relevant_dofs,
                                        mpi_communicator);
@@ -172,11 +177,6 @@ namespace VPContact
                            quadrature.size());
     solution  = solution_owned;
     increment = increment_owned;
-    if (damage_model.is_active())
-      {
-        damage_owned = solution_owned;
-        damage       = damage_owned;
-      }
 
     // The active sets, and the constraints as the uninterrupted run has
     // them after step n: the stick nodes of the restored set (they shape the
@@ -191,7 +191,16 @@ namespace VPContact
     if (friction_active)
       friction_active_set.read_state(sets);
     if (damage_model.is_active())
-      damage_bounds.read_state(sets);
+      {
+        TrilinosWrappers::MPI::Vector bound_sets(damage_system.owned(),
+                                                 mpi_communicator);
+        damage_system.gather(sets_owned, bound_sets);
+        TrilinosWrappers::MPI::Vector ghosted(damage_system.owned(),
+                                              damage_system.relevant(),
+                                              mpi_communicator);
+        ghosted = bound_sets;
+        damage_bounds.read_state(ghosted);
+      }
     make_constraints(time_discretization.time(checkpoint.step), &solution);
 
     // What the run has written so far, as it stood at the checkpoint: the

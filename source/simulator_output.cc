@@ -186,7 +186,10 @@ namespace VPContact
     if (verification.has_exact_damage())
       {
         const double error
-          = verification.damage_error(dof_handler, solution, damage_dofs, time);
+          = verification.damage_error(dof_handler,
+                                      solution,
+                                      damage_system.full_dofs(),
+                                      time);
         statistics.add_value("damage_error_max", error);
         line += "  damage error = " + format("%.2e", error);
       }

@@ -4,7 +4,6 @@
 #define vpcontact_damage_bounds_h
 
 #include <deal.II/base/index_set.h>
-#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <utility>
@@ -54,9 +53,10 @@ namespace VPContact
   {
   public:
     /**
-     * @p damage_dofs are the locally relevant damage degrees of freedom,
-     * @p lumped_mass a ghosted vector of the lumped masses m_i. All nodes
-     * start free.
+     * @p damage_dofs are the locally relevant damage degrees of freedom
+     * that carry bounds (indices into the vectors passed to the other
+     * functions), @p lumped_mass a ghosted vector of the lumped masses m_i.
+     * All nodes start free.
      */
     void
     setup(const IndexSet                      &damage_dofs,
@@ -65,13 +65,13 @@ namespace VPContact
           const MPI_Comm                       communicator);
 
     /**
-     * Constraints on the damage change zeta - zeta_old: zeta_i = 0 on the
-     * lower set, zeta_i = 1 on the upper set, with zeta_old the damage
-     * entries of the ghosted @p old_damage.
+     * The owned nodes of the active sets with the change of the damage that
+     * puts them on their bound: (index, 1 - zeta_old) on the upper set,
+     * (index, -zeta_old) on the lower one, zeta_old read from
+     * @p old_damage (owned entries suffice).
      */
-    void
-    add_constraints(AffineConstraints<double>           &constraints,
-                    const TrilinosWrappers::MPI::Vector &old_damage) const;
+    std::vector<std::pair<types::global_dof_index, double>>
+    held_changes(const TrilinosWrappers::MPI::Vector &old_damage) const;
 
     /**
      * The next sets from the ghosted @p residual and @p damage, with

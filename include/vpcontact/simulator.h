@@ -7,6 +7,7 @@
 #include <vpcontact/checkpointing.h>
 #include <vpcontact/convergence_table.h>
 #include <vpcontact/damage_bounds.h>
+#include <vpcontact/damage_system.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/friction_active_set.h>
@@ -207,16 +208,11 @@ namespace VPContact
     std::pair<double, double>
     damage_range(const TrilinosWrappers::MPI::Vector &v) const;
     void
-    make_damage_constraints();
-    void
     assemble_damage(const bool matrix);
     void
     solve_damage(const unsigned int n);
     void
     store_damage(const unsigned int n);
-    void
-    solve_masked_damage_system(
-      const std::vector<types::global_dof_index> &held);
     void
     add_damage_statistics(std::string &line);
 
@@ -322,27 +318,27 @@ namespace VPContact
     /// One constant mode per component, for ML (computed once per mesh).
     std::vector<std::vector<bool>> all_constant_modes;
 
-    // The damage step (damage scenes only): its own constraints (every
-    // displacement dof held, the active bounds), matrix and vectors on the
-    // same DoFHandler, and its active set.
-    IndexSet                  damage_dofs;
-    DamageBounds              damage_bounds;
-    AffineConstraints<double> damage_constraints;
-    /// The hanging node constraints alone, which condense the damage load
-    /// and the lumped mass onto the nodes that carry the bounds.
-    AffineConstraints<double>      hanging_node_constraints;
-    TrilinosWrappers::SparseMatrix damage_matrix;
-    TrilinosWrappers::MPI::Vector  damage_rhs;
-    TrilinosWrappers::MPI::Vector  damage_owned;
-    /// zeta_n - zeta_{n-1}, the unknown of the damage solves (owned).
-    TrilinosWrappers::MPI::Vector     damage_change;
-    TrilinosWrappers::MPI::Vector     damage;
-    TrilinosWrappers::MPI::Vector     damage_load_assembly;
-    TrilinosWrappers::MPI::Vector     damage_load;
-    TrilinosWrappers::MPI::Vector     damage_residual_owned;
-    TrilinosWrappers::MPI::Vector     damage_residual;
-    TrilinosWrappers::MPI::Vector     lumped_mass;
-    TrilinosWrappers::PreconditionAMG damage_amg;
+    // The damage step (damage scenes only): its linear algebra on the
+    // damage degrees of freedom alone, its active set, and its vectors, all
+    // in the compact numbering of damage_system.
+    DamageSystem<dim>             damage_system;
+    DamageBounds                  damage_bounds;
+    /// zeta_{n-1} and zeta (owned), and a ghosted copy of zeta.
+    TrilinosWrappers::MPI::Vector damage_old;
+    TrilinosWrappers::MPI::Vector damage_owned;
+    TrilinosWrappers::MPI::Vector damage;
+    /// zeta - zeta_{n-1}, the unknown of the damage solves, and their
+    /// right-hand side (owned).
+    TrilinosWrappers::MPI::Vector damage_change;
+    TrilinosWrappers::MPI::Vector damage_rhs;
+    /// b = M_L zeta_{n-1}/k + (phi_{n-1}, psi): as assembled (with ghost
+    /// entries) and owned.
+    TrilinosWrappers::MPI::Vector damage_load_assembly;
+    TrilinosWrappers::MPI::Vector damage_load;
+    /// The multipliers b - K zeta: owned and ghosted.
+    TrilinosWrappers::MPI::Vector damage_residual_owned;
+    TrilinosWrappers::MPI::Vector damage_residual;
+    TrilinosWrappers::MPI::Vector lumped_mass;
     unsigned int                      last_damage_iterations = 0;
     double                            last_damage_clip       = 0;
     double                            max_damage_violation   = 0;

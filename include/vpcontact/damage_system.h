@@ -1,0 +1,138 @@
+// The linear algebra of the damage obstacle problem on the damage degrees of
+// freedom alone: their compact numbering inside the FESystem, the matrix
+// M_L/k + kappa A with its AMG, and the CG solve with nodes held at bounds.
+#ifndef vpcontact_damage_system_h
+#define vpcontact_damage_system_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * The damage zeta is the last component of the simulator's FESystem, so
+   * its degrees of freedom are a third (2D) or a quarter (3D) of all of
+   * them, interleaved with the displacement. Solving the damage problem in
+   * the numbering of the FESystem would drag the displacement rows through
+   * every matrix-vector product and every AMG level as held (identity)
+   * rows. This class numbers the damage degrees of freedom contiguously
+   * instead (rank by rank, in the order of the FESystem's numbering) and
+   * keeps the damage problem there: a scalar matrix, a scalar AMG, and
+   * vectors a third of the size. gather() and scatter() move the damage
+   * entries between the two numberings; the solution itself stays in the
+   * FESystem.
+   *
+   * "Compact" below means an index or vector of this numbering.
+   */
+  template <int dim>
+  class DamageSystem
+  {
+  public:
+    /**
+     * Number the damage degrees of freedom (component @p component of the
+     * FESystem of @p dof_handler) and build the hanging node constraints
+     * and the sparsity pattern of the compact system. Releases the AMG of
+     * an earlier mesh first.
+     */
+    void
+    reinit(const DoFHandler<dim> &dof_handler,
+           const unsigned int     component,
+           const IndexSet        &locally_owned_dofs,
+           const IndexSet        &locally_relevant_dofs,
+           const MPI_Comm         communicator);
+
+    /// Locally owned and locally relevant compact indices.
+    const IndexSet &
+    owned() const;
+    const IndexSet &
+    relevant() const;
+
+    /// The FESystem's locally relevant damage degrees of freedom.
+    const IndexSet &
+    full_dofs() const;
+
+    /**
+     * The shape functions of the FESystem that belong to the damage, in the
+     * order in which dof_indices() lists their compact indices.
+     */
+    const std::vector<unsigned int> &
+    shape_functions() const;
+
+    /// The compact indices of a locally owned cell's damage shape functions.
+    void
+    dof_indices(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                std::vector<types::global_dof_index> &indices) const;
+
+    /// Hanging node constraints in the compact numbering.
+    const AffineConstraints<double> &
+    hanging_node_constraints() const;
+
+    /// The position of an owned compact index in the local vector entries.
+    unsigned int
+    local_position(const types::global_dof_index compact_index) const;
+
+    /// Owned damage entries: FESystem vector -> compact vector.
+    void
+    gather(const TrilinosWrappers::MPI::Vector &full,
+           TrilinosWrappers::MPI::Vector       &compact) const;
+
+    /// Owned damage entries: compact vector -> FESystem vector (the
+    /// displacement entries of @p full are left alone).
+    void
+    scatter(const TrilinosWrappers::MPI::Vector &compact,
+            TrilinosWrappers::MPI::Vector       &full) const;
+
+    /// The matrix, for assembly (its sparsity pattern is set by reinit()).
+    TrilinosWrappers::SparseMatrix &
+    matrix();
+
+    /// Build the AMG of the assembled matrix (after assembly).
+    void
+    initialize_preconditioner();
+
+    /**
+     * Solve K_FF x_F = b_F on the free nodes, x = 0 on the nodes listed in
+     * @p held (local positions, see local_position()): CG on
+     * P K P + (I - P), P zeroing the held entries, preconditioned alike by
+     * P AMG(K) P + (I - P), so that neither the matrix nor the AMG is
+     * rebuilt when the held set changes. @p b must be zero on the held
+     * nodes; @p x is the start vector. Stops at a residual of @p tolerance
+     * times |b|; throws a message naming the Solver parameters otherwise.
+     * Returns the number of CG iterations.
+     */
+    unsigned int
+    solve(const TrilinosWrappers::MPI::Vector &b,
+          TrilinosWrappers::MPI::Vector       &x,
+          const std::vector<unsigned int>     &held,
+          const double                         tolerance,
+          const unsigned int                   max_iterations) const;
+
+  private:
+    IndexSet compact_owned;
+    IndexSet compact_relevant;
+    IndexSet damage_dofs;
+    /// For each owned compact index (by local position): the local position
+    /// of the same degree of freedom in an owned FESystem vector.
+    std::vector<unsigned int> full_position;
+    std::vector<unsigned int> damage_shape_functions;
+    /// The compact indices of each locally owned cell, by active cell index.
+    std::vector<types::global_dof_index> cell_dofs;
+    AffineConstraints<double>            constraints;
+
+    TrilinosWrappers::SparseMatrix                     system_matrix;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    mutable TrilinosWrappers::MPI::Vector              masked;
+  };
+} // namespace VPContact
+
+#endif

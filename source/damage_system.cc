@@ -1,0 +1,325 @@
+// The damage problem's linear algebra on the damage degrees of freedom alone.
+#include <vpcontact/damage_system.h>
+#include <vpcontact/input_error.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <cmath>
+#include <functional>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  DamageSystem<dim>::reinit(const DoFHandler<dim> &dof_handler,
+                            const unsigned int     component,
+                            const IndexSet        &locally_owned_dofs,
+                            const IndexSet        &locally_relevant_dofs,
+                            const MPI_Comm         communicator)
+  {
+    amg.reset(); // it refers to the matrix of the last mesh
+    const auto &fe = dof_handler.get_fe();
+    damage_shape_functions.clear();
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first == component)
+        damage_shape_functions.push_back(i);
+    const unsigned int n_shape = damage_shape_functions.size();
+
+    // The damage dofs this rank sees, and the owned ones in the order of
+    // the FESystem: they get the compact indices first, first + 1, ...
+    damage_dofs.clear();
+    damage_dofs.set_size(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (const unsigned int i : damage_shape_functions)
+            damage_dofs.add_index(dofs[i]);
+        }
+    damage_dofs.compress();
+    IndexSet owned_damage_dofs = damage_dofs & locally_owned_dofs;
+    compact_owned              = Utilities::MPI::create_ascending_partitioning(
+      communicator,
+      owned_damage_dofs.n_elements())[Utilities::MPI::this_mpi_process(
+      communicator)];
+
+    // The compact index of every relevant damage dof, through a ghosted
+    // FESystem vector that holds it (exact in a double up to 2^53).
+    TrilinosWrappers::MPI::Vector index_owned(locally_owned_dofs,
+                                              communicator);
+    full_position.clear();
+    {
+      types::global_dof_index next = compact_owned.nth_index_in_set(0);
+      for (const auto dof : owned_damage_dofs)
+        {
+          index_owned(dof) = static_cast<double>(next++);
+          full_position.push_back(locally_owned_dofs.index_within_set(dof));
+        }
+    }
+    index_owned.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector index(locally_owned_dofs,
+                                        locally_relevant_dofs,
+                                        communicator);
+    index            = index_owned;
+    const auto to_compact = [&index](const types::global_dof_index dof) {
+      return static_cast<types::global_dof_index>(std::llround(index(dof)));
+    };
+
+    const types::global_dof_index n_compact = compact_owned.size();
+    compact_relevant                        = IndexSet(n_compact);
+    for (const auto dof : damage_dofs)
+      compact_relevant.add_index(to_compact(dof));
+    compact_relevant.compress();
+
+    cell_dofs.assign(dof_handler.get_triangulation().n_active_cells()
+                       * n_shape,
+                     numbers::invalid_dof_index);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int j = 0; j < n_shape; ++j)
+            cell_dofs[cell->active_cell_index() * n_shape + j]
+              = to_compact(dofs[damage_shape_functions[j]]);
+        }
+
+    // The hanging node constraints of the FESystem, translated. A hanging
+    // damage node depends on damage nodes of a cell this rank sees, so its
+    // parents are relevant here too.
+    AffineConstraints<double> full_constraints(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, full_constraints);
+    full_constraints.close();
+    constraints.clear();
+    constraints.reinit(compact_relevant);
+    for (const auto dof : damage_dofs)
+      if (full_constraints.is_constrained(dof))
+        {
+          const auto line = to_compact(dof);
+          constraints.add_line(line);
+          for (const auto &[parent, weight] :
+               *full_constraints.get_constraint_entries(dof))
+            {
+              AssertThrow(locally_relevant_dofs.is_element(parent),
+                          ExcInternalError());
+              constraints.add_entry(line, to_compact(parent), weight);
+            }
+        }
+    constraints.close();
+
+    DynamicSparsityPattern               dsp(compact_relevant);
+    std::vector<types::global_dof_index> indices(n_shape);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          dof_indices(cell, indices);
+          constraints.add_entries_local_to_global(indices, dsp, false);
+        }
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               compact_owned,
+                                               communicator,
+                                               compact_relevant);
+    system_matrix.reinit(compact_owned, compact_owned, dsp, communicator);
+    masked.reinit(compact_owned, communicator);
+  }
+
+
+
+  template <int dim>
+  const IndexSet &
+  DamageSystem<dim>::owned() const
+  {
+    return compact_owned;
+  }
+
+
+
+  template <int dim>
+  const IndexSet &
+  DamageSystem<dim>::relevant() const
+  {
+    return compact_relevant;
+  }
+
+
+
+  template <int dim>
+  const IndexSet &
+  DamageSystem<dim>::full_dofs() const
+  {
+    return damage_dofs;
+  }
+
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  DamageSystem<dim>::shape_functions() const
+  {
+    return damage_shape_functions;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::dof_indices(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    std::vector<types::global_dof_index>                 &indices) const
+  {
+    const unsigned int n_shape = damage_shape_functions.size();
+    indices.resize(n_shape);
+    for (unsigned int j = 0; j < n_shape; ++j)
+      indices[j] = cell_dofs[cell->active_cell_index() * n_shape + j];
+  }
+
+
+
+  template <int dim>
+  const AffineConstraints<double> &
+  DamageSystem<dim>::hanging_node_constraints() const
+  {
+    return constraints;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageSystem<dim>::local_position(
+    const types::global_dof_index compact_index) const
+  {
+    return compact_index - compact_owned.nth_index_in_set(0);
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::gather(const TrilinosWrappers::MPI::Vector &full,
+                            TrilinosWrappers::MPI::Vector &compact) const
+  {
+    // The local entries of owned vectors, in the order of their index sets
+    // (contiguous ranges here): no index lookup per entry.
+    const double *source      = full.begin();
+    double       *destination = compact.begin();
+    for (unsigned int i = 0; i < full_position.size(); ++i)
+      destination[i] = source[full_position[i]];
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::scatter(const TrilinosWrappers::MPI::Vector &compact,
+                             TrilinosWrappers::MPI::Vector       &full) const
+  {
+    const double *source      = compact.begin();
+    double       *destination = full.begin();
+    for (unsigned int i = 0; i < full_position.size(); ++i)
+      destination[full_position[i]] = source[i];
+  }
+
+
+
+  template <int dim>
+  TrilinosWrappers::SparseMatrix &
+  DamageSystem<dim>::matrix()
+  {
+    return system_matrix;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::initialize_preconditioner()
+  {
+    // A scalar elliptic problem: ML's defaults with one constant mode.
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic = true;
+    amg           = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    amg->initialize(system_matrix, data);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageSystem<dim>::solve(const TrilinosWrappers::MPI::Vector &b,
+                           TrilinosWrappers::MPI::Vector       &x,
+                           const std::vector<unsigned int>     &held,
+                           const double                         tolerance,
+                           const unsigned int max_iterations) const
+  {
+    Assert(amg, ExcMessage("initialize_preconditioner() first."));
+    // x -> P A P x + (I - P) x for A = K or AMG(K), on the local entries.
+    struct Masked
+    {
+      std::function<void(TrilinosWrappers::MPI::Vector &,
+                         const TrilinosWrappers::MPI::Vector &)>
+                                             apply;
+      const std::vector<unsigned int>       &held;
+      TrilinosWrappers::MPI::Vector         &tmp;
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        tmp = src;
+        double *t = tmp.begin();
+        for (const auto i : held)
+          t[i] = 0.;
+        apply(dst, tmp);
+        double       *d = dst.begin();
+        const double *s = src.begin();
+        for (const auto i : held)
+          d[i] = s[i];
+      }
+    };
+    const Masked operator_on_free{[this](auto &dst, const auto &src) {
+                                    system_matrix.vmult(dst, src);
+                                  },
+                                  held,
+                                  masked};
+    const Masked preconditioner_on_free{[this](auto &dst, const auto &src) {
+                                          amg->vmult(dst, src);
+                                        },
+                                        held,
+                                        masked};
+
+    const double b_norm = b.l2_norm();
+    if (b_norm == 0.)
+      {
+        x = 0.;
+        return 0;
+      }
+    SolverControl control(max_iterations, tolerance * b_norm);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    try
+      {
+        cg.solve(operator_on_free, x, b, preconditioner_on_free);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        AssertThrow(false,
+                    ExcMessage("CG did not converge for the damage: after "
+                               + std::to_string(e.last_step)
+                               + " iterations the residual is "
+                               + to_text(e.last_residual) + " > "
+                               + to_text(control.tolerance())
+                               + ". Raise Solver/Maximum linear iterations or "
+                                 "loosen Solver/Relative tolerance."));
+      }
+    return control.last_step();
+  }
+
+
+
+  template class DamageSystem<2>;
+  template class DamageSystem<3>;
+} // namespace VPContact
