@@ -37,7 +37,7 @@ namespace VPContact
           AssertDimension(points.size(), n_q_points);
           std::vector<double> values(n_q_points * n_values);
           for (unsigned int q = 0; q < n_q_points; ++q)
-            points[q]->write_to(&values[q * n_values]);
+            points[q].write_to(&values[q * n_values]);
           std::vector<char> bytes(values.size() * sizeof(double));
           std::memcpy(bytes.data(), values.data(), bytes.size());
           return bytes;
@@ -95,7 +95,7 @@ namespace VPContact
           const auto points = history.get_data(cell);
           AssertDimension(points.size(), n_q_points);
           for (unsigned int q = 0; q < n_q_points; ++q)
-            points[q]->read_from(&values[q * n_values]);
+            points[q].read_from(&values[q * n_values]);
         });
     }
 

@@ -46,13 +46,12 @@ namespace VPContact
     IndexSet owned_damage_dofs = damage_dofs & locally_owned_dofs;
     compact_owned              = Utilities::MPI::create_ascending_partitioning(
       communicator,
-      owned_damage_dofs.n_elements())[Utilities::MPI::this_mpi_process(
-      communicator)];
+      owned_damage_dofs
+        .n_elements())[Utilities::MPI::this_mpi_process(communicator)];
 
     // The compact index of every relevant damage dof, through a ghosted
     // FESystem vector that holds it (exact in a double up to 2^53).
-    TrilinosWrappers::MPI::Vector index_owned(locally_owned_dofs,
-                                              communicator);
+    TrilinosWrappers::MPI::Vector index_owned(locally_owned_dofs, communicator);
     full_position.clear();
     {
       types::global_dof_index next = compact_owned.nth_index_in_set(0);
@@ -66,7 +65,7 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector index(locally_owned_dofs,
                                         locally_relevant_dofs,
                                         communicator);
-    index            = index_owned;
+    index                 = index_owned;
     const auto to_compact = [&index](const types::global_dof_index dof) {
       return static_cast<types::global_dof_index>(std::llround(index(dof)));
     };
@@ -77,8 +76,7 @@ namespace VPContact
       compact_relevant.add_index(to_compact(dof));
     compact_relevant.compress();
 
-    cell_dofs.assign(dof_handler.get_triangulation().n_active_cells()
-                       * n_shape,
+    cell_dofs.assign(dof_handler.get_triangulation().n_active_cells() * n_shape,
                      numbers::invalid_dof_index);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -202,7 +200,7 @@ namespace VPContact
   template <int dim>
   void
   DamageSystem<dim>::gather(const TrilinosWrappers::MPI::Vector &full,
-                            TrilinosWrappers::MPI::Vector &compact) const
+                            TrilinosWrappers::MPI::Vector       &compact) const
   {
     // The local entries of owned vectors, in the order of their index sets
     // (contiguous ranges here): no index lookup per entry.
@@ -263,14 +261,14 @@ namespace VPContact
     {
       std::function<void(TrilinosWrappers::MPI::Vector &,
                          const TrilinosWrappers::MPI::Vector &)>
-                                             apply;
-      const std::vector<unsigned int>       &held;
-      TrilinosWrappers::MPI::Vector         &tmp;
+                                       apply;
+      const std::vector<unsigned int> &held;
+      TrilinosWrappers::MPI::Vector   &tmp;
       void
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
-        tmp = src;
+        tmp       = src;
         double *t = tmp.begin();
         for (const auto i : held)
           t[i] = 0.;

@@ -350,6 +350,20 @@ namespace VPContact
 
 
 
+  template <int dim>
+  IndexSet
+  FrictionActiveSet<dim>::node_dofs(const types::global_dof_index n_dofs) const
+  {
+    IndexSet dofs(n_dofs);
+    for (const auto &node : nodes)
+      for (const auto dof : node.dofs)
+        dofs.add_index(dof);
+    dofs.compress();
+    return dofs;
+  }
+
+
+
   template class FrictionActiveSet<2>;
   template class FrictionActiveSet<3>;
 } // namespace VPContact

@@ -161,7 +161,7 @@ namespace VPContact
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
-              auto &point     = *history[q];
+              auto &point     = history[q];
               point.predictor = point.stress;
               if (evaluate_rate)
                 point.predictor += k
@@ -216,7 +216,8 @@ namespace VPContact
     // increment, without condensing the constraints: at a contact node its
     // tangential part is the friction force (lambda_i m_i), its normal part
     // the reaction of the foundation. Loads are at the time of the last
-    // assemble_rhs().
+    // assemble_rhs(). Only those entries are read, so only the cells with a
+    // contact node are visited: the other entries of r are incomplete.
     AssemblyScratch                  scratch(fe, quadrature);
     FEValues<dim>                   &fe_values      = scratch.fe_values;
     FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
@@ -227,27 +228,25 @@ namespace VPContact
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
 
     residual_assembly = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell_residual = 0.;
-          fe_values.reinit(cell);
-          fe_values[u].get_function_symmetric_gradients(increment,
-                                                        strain_increments);
-          const auto history = stress_history.get_data(cell);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const SymmetricTensor<2, dim> stress
-                = history[q]->predictor + material.stress(strain_increments[q]);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_residual(i) -= stress
-                                    * fe_values[u].symmetric_gradient(i, q)
-                                    * fe_values.JxW(q);
-            }
-          add_cell_loads(cell, fe_values, fe_face_values, cell_residual);
-          cell->get_dof_indices(dof_indices);
-          residual_assembly.add(dof_indices, cell_residual);
-        }
+    for (const auto &cell : contact_cells)
+      {
+        cell_residual = 0.;
+        fe_values.reinit(cell);
+        fe_values[u].get_function_symmetric_gradients(increment,
+                                                      strain_increments);
+        const auto history = stress_history.get_data(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const SymmetricTensor<2, dim> stress
+              = history[q].predictor + material.stress(strain_increments[q]);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              cell_residual(i) -= stress * fe_values[u].symmetric_gradient(i, q)
+                                  * fe_values.JxW(q);
+          }
+        add_cell_loads(cell, fe_values, fe_face_values, cell_residual);
+        cell->get_dof_indices(dof_indices);
+        residual_assembly.add(dof_indices, cell_residual);
+      }
     residual_assembly.compress(VectorOperation::add);
     residual = residual_assembly;
   }

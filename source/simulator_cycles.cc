@@ -125,7 +125,7 @@ namespace VPContact
             }
           const auto history = stress_history.get_data(cell);
           for (unsigned int q = 0; q < V; ++q)
-            sigma[q] = history[q]->stress;
+            sigma[q] = history[q].stress;
           snapshot.add_cell(cell->id(), vertices, u, zeta, sigma);
         }
     return snapshot;

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <utility>
 
 namespace VPContact
 {
@@ -56,13 +57,13 @@ namespace VPContact
     template <int dim>
     void
     damage_cell_load(
-      const FEValues<dim>             &fe_values,
-      const FEValues<dim>             &lobatto_values,
-      const std::vector<unsigned int> &shape,
-      const std::vector<double>       &old_nodal,
-      const std::vector<std::shared_ptr<QuadraturePointHistory<dim>>> &history,
-      const double                                                     k,
-      Vector<double> &cell_rhs)
+      const FEValues<dim>                                &fe_values,
+      const FEValues<dim>                                &lobatto_values,
+      const std::vector<unsigned int>                    &shape,
+      const std::vector<double>                          &old_nodal,
+      const ArrayView<const QuadraturePointHistory<dim>> &history,
+      const double                                        k,
+      Vector<double>                                     &cell_rhs)
     {
       for (const unsigned int q : lobatto_values.quadrature_point_indices())
         {
@@ -71,12 +72,12 @@ namespace VPContact
             old_damage
               += lobatto_values.shape_value(shape[b], q) * old_nodal[b];
           for (unsigned int a = 0; a < shape.size(); ++a)
-            cell_rhs(a) += lobatto_values.shape_value(shape[a], q)
-                           * old_damage / k * lobatto_values.JxW(q);
+            cell_rhs(a) += lobatto_values.shape_value(shape[a], q) * old_damage
+                           / k * lobatto_values.JxW(q);
         }
       for (const unsigned int q : fe_values.quadrature_point_indices())
         for (unsigned int a = 0; a < shape.size(); ++a)
-          cell_rhs(a) += history[q]->damage_source
+          cell_rhs(a) += history[q].damage_source
                          * fe_values.shape_value(shape[a], q)
                          * fe_values.JxW(q);
     }
@@ -157,8 +158,8 @@ namespace VPContact
     // adaptive meshes it is condensed like the load: a hanging node hands
     // its mass to the nodes it depends on, and carries no bound itself (its
     // value is an average of theirs, within [0, 1] when theirs are).
-    const auto              &constraints = damage_system.hanging_node_constraints();
-    const auto              &shape       = damage_system.shape_functions();
+    const auto &constraints = damage_system.hanging_node_constraints();
+    const auto &shape       = damage_system.shape_functions();
     const QGaussLobatto<dim> lobatto(2);
     FEValues<dim> fe_values(fe, lobatto, update_values | update_JxW_values);
     std::vector<types::global_dof_index> dof_indices;
@@ -176,7 +177,8 @@ namespace VPContact
           cell_mass = 0.;
           for (unsigned int a = 0; a < shape.size(); ++a)
             for (const unsigned int q : fe_values.quadrature_point_indices())
-              cell_mass(a) += fe_values.shape_value(shape[a], q) * fe_values.JxW(q);
+              cell_mass(a)
+                += fe_values.shape_value(shape[a], q) * fe_values.JxW(q);
           constraints.distribute_local_to_global(cell_mass, dof_indices, mass);
         }
     mass.compress(VectorOperation::add);
@@ -259,20 +261,20 @@ namespace VPContact
     // at the Gauss points by assemble_rhs(), with zeta_{n-1} from the
     // ghosted compact vector damage. Both are condensed on hanging nodes
     // only: the bounds are imposed by the solver.
-    const double       k     = time_discretization.step_size();
-    const double       kappa = damage_model.diffusion();
-    const auto        &shape = damage_system.shape_functions();
-    const auto        &constraints = damage_system.hanging_node_constraints();
+    const double k           = time_discretization.step_size();
+    const double kappa       = damage_model.diffusion();
+    const auto  &shape       = damage_system.shape_functions();
+    const auto  &constraints = damage_system.hanging_node_constraints();
     const QGaussLobatto<dim> lobatto(2);
     FEValues<dim>            fe_values(fe,
                             quadrature,
                             (matrix ? update_gradients : update_values)
                               | update_JxW_values);
-    FEValues<dim>      lobatto_values(fe,
+    FEValues<dim>            lobatto_values(fe,
                                  lobatto,
                                  update_values | update_JxW_values);
-    FullMatrix<double> cell_matrix(shape.size(), shape.size());
-    Vector<double>     cell_rhs(shape.size());
+    FullMatrix<double>       cell_matrix(shape.size(), shape.size());
+    Vector<double>           cell_rhs(shape.size());
     std::vector<types::global_dof_index> dof_indices;
     std::vector<double>                  old_nodal(shape.size());
 
@@ -288,8 +290,12 @@ namespace VPContact
           damage_system.dof_indices(cell, dof_indices);
           if (matrix)
             {
-              damage_cell_matrix(
-                fe_values, lobatto_values, shape, k, kappa, cell_matrix);
+              damage_cell_matrix(fe_values,
+                                 lobatto_values,
+                                 shape,
+                                 k,
+                                 kappa,
+                                 cell_matrix);
               constraints.distribute_local_to_global(cell_matrix,
                                                      dof_indices,
                                                      damage_system.matrix());
@@ -303,7 +309,7 @@ namespace VPContact
                                lobatto_values,
                                shape,
                                old_nodal,
-                               stress_history.get_data(cell),
+                               std::as_const(stress_history).get_data(cell),
                                k,
                                cell_rhs);
               constraints.distribute_local_to_global(cell_rhs,
@@ -326,76 +332,51 @@ namespace VPContact
   void
   Simulator<dim>::solve_damage(const unsigned int n)
   {
-    // The primal-dual active set for 0 <= zeta <= 1, warm-started from the
-    // sets of the previous step: solve with the nodes of the active sets at
-    // their bound, recompute the multipliers from the residual, take the
-    // next sets, until no node changes. The unknown of the linear solves is
-    // the change zeta - zeta_{n-1}: its right-hand side F - kappa A
-    // zeta_{n-1} is small where little happens, so the relative tolerance
-    // of CG measures what changes, not the mass term M zeta_{n-1}/k.
-    last_damage_iterations = 0;
-    damage_change          = 0.;
+    // The primal-dual active set for 0 <= zeta <= 1: solve with the nodes
+    // of the active sets at their bound, recompute the multipliers from the
+    // residual, take the next sets, until no node changes. The unknown of
+    // the linear solves is the change zeta - zeta_{n-1}: its right-hand
+    // side F - kappa A zeta_{n-1} is small where little happens, so the
+    // relative tolerance of CG measures what changes, not the mass term
+    // M zeta_{n-1}/k.
+    last_damage_iterations                  = 0;
+    damage_change                           = 0.;
     const TrilinosWrappers::SparseMatrix &K = damage_system.matrix();
 
     // zeta_{n-1} from the solution, b and b - K zeta_{n-1} of this step.
     damage_system.gather(solution_owned, damage_old);
     damage = damage_old;
     assemble_damage(false);
-    TrilinosWrappers::MPI::Vector step_rhs(damage_old), bound_change(damage_old);
+    TrilinosWrappers::MPI::Vector step_rhs(damage_old);
     K.vmult(step_rhs, damage_old);
     step_rhs.sadd(-1., 1., damage_load);
 
-    const auto &hanging = damage_system.hanging_node_constraints();
+    // The first sets: one semismooth Newton step from zeta_{n-1} with the
+    // multipliers of this step's load, b - K zeta_{n-1}, which starts from
+    // the sets of the previous step and already moves the nodes that this
+    // load alone pushes off (or onto) a bound. Without it the first solve
+    // would only find them.
+    damage_residual = step_rhs;
+    damage_bounds.update(damage_residual,
+                         damage,
+                         time_discretization.step_size());
+
+    // While the sets still change, the solves that find them need not be
+    // exact: their multipliers only decide the next sets. They stop at a
+    // relative residual of 1e-6 (or the Solver tolerance, if looser); once
+    // the sets are stable, one more solve to the Solver tolerance, which
+    // must confirm them. The sets are always decided by that last solve.
+    const double tight     = linear_solver.tolerance();
+    double       tolerance = std::max(tight, 1e-6);
     for (unsigned int iteration = 1;; ++iteration)
       {
-        TimerOutput::Scope t(computing_timer, "Damage solve");
-        // The held nodes: hanging nodes (change 0 in the solve, set from
-        // their parents after it) and the nodes at a bound (their change is
-        // prescribed).
-        std::vector<unsigned int> held;
-        for (const auto dof : damage_system.owned())
-          if (hanging.is_constrained(dof))
-            held.push_back(damage_system.local_position(dof));
-        bound_change = 0.;
-        for (const auto &[dof, change] : damage_bounds.held_changes(damage_old))
-          {
-            held.push_back(damage_system.local_position(dof));
-            bound_change.begin()[held.back()] = change;
-          }
-
-        // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +
-        // bound_change))_F; the held rows of the right-hand side are zero.
-        K.vmult(damage_rhs, bound_change);
-        damage_rhs.sadd(-1., 1., step_rhs);
-        for (const auto i : held)
-          {
-            damage_rhs.begin()[i]    = 0.;
-            damage_change.begin()[i] = 0.; // the start vector, as solved
-          }
-        damage_system.solve(damage_rhs,
-                            damage_change,
-                            held,
-                            linear_solver.tolerance(),
-                            linear_solver.iteration_limit());
-        damage_change += bound_change;
-        hanging.distribute(damage_change);
-
-        damage_owned = damage_old;
-        damage_owned += damage_change;
-        damage                 = damage_owned;
         last_damage_iterations = iteration;
-
-        // The multipliers r = b - K zeta (bounds not condensed; hanging
-        // nodes carry none).
-        K.vmult(damage_residual_owned, damage_owned);
-        damage_residual_owned.sadd(-1., 1., damage_load);
-        damage_residual = damage_residual_owned;
         const unsigned int n_changed
-          = damage_bounds.update(damage_residual,
-                                 damage,
-                                 time_discretization.step_size());
-        if (n_changed == 0)
+          = solve_damage_with_sets(step_rhs, tolerance);
+        if (n_changed == 0 && tolerance == tight)
           break;
+        if (n_changed == 0)
+          tolerance = tight;
         AssertThrow(iteration < damage_model.max_iterations(),
                     ExcMessage(
                       "Step " + std::to_string(n)
@@ -420,6 +401,64 @@ namespace VPContact
 
 
   template <int dim>
+  unsigned int
+  Simulator<dim>::solve_damage_with_sets(
+    const TrilinosWrappers::MPI::Vector &step_rhs,
+    const double                         tolerance)
+  {
+    TimerOutput::Scope                    t(computing_timer, "Damage solve");
+    const TrilinosWrappers::SparseMatrix &K = damage_system.matrix();
+    const auto &hanging = damage_system.hanging_node_constraints();
+
+    // The held nodes: hanging nodes (change 0 in the solve, set from their
+    // parents after it) and the nodes at a bound (their change is
+    // prescribed).
+    std::vector<unsigned int> held;
+    for (const auto dof : damage_system.owned())
+      if (hanging.is_constrained(dof))
+        held.push_back(damage_system.local_position(dof));
+    TrilinosWrappers::MPI::Vector bound_change(damage_old);
+    bound_change = 0.;
+    for (const auto &[dof, change] : damage_bounds.held_changes(damage_old))
+      {
+        held.push_back(damage_system.local_position(dof));
+        bound_change.begin()[held.back()] = change;
+      }
+
+    // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +
+    // bound_change))_F; the held rows of the right-hand side are zero. The
+    // change of the previous solve is the start vector.
+    K.vmult(damage_rhs, bound_change);
+    damage_rhs.sadd(-1., 1., step_rhs);
+    for (const auto i : held)
+      {
+        damage_rhs.begin()[i]    = 0.;
+        damage_change.begin()[i] = 0.;
+      }
+    damage_system.solve(damage_rhs,
+                        damage_change,
+                        held,
+                        tolerance,
+                        linear_solver.iteration_limit());
+    damage_change += bound_change;
+    hanging.distribute(damage_change);
+    damage_owned = damage_old;
+    damage_owned += damage_change;
+    damage = damage_owned;
+
+    // The multipliers r = b - K zeta (bounds not condensed; hanging nodes
+    // carry none) and the next sets.
+    K.vmult(damage_residual_owned, damage_owned);
+    damage_residual_owned.sadd(-1., 1., damage_load);
+    damage_residual = damage_residual_owned;
+    return damage_bounds.update(damage_residual,
+                                damage,
+                                time_discretization.step_size());
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::store_damage(const unsigned int n)
   {
@@ -432,9 +471,9 @@ namespace VPContact
         const double clipped = std::clamp(value, 0., 1.);
         // NaN compares false: the clip becomes infinite and is caught
         // below, on every rank alike.
-        clip = (std::abs(value - clipped) <= clip ? clip :
-                std::isfinite(value)              ? std::abs(value - clipped) :
-                                       std::numeric_limits<double>::infinity());
+        clip  = (std::abs(value - clipped) <= clip ? clip :
+                 std::isfinite(value)              ? std::abs(value - clipped) :
+                                        std::numeric_limits<double>::infinity());
         value = clipped;
       }
     clip = Utilities::MPI::max(clip, mpi_communicator);

@@ -55,7 +55,7 @@ namespace VPContact
             {
               const auto update = implicit_stress_update(
                 *viscoplastic_law,
-                history[q]->stress + material.stress(strain_increments[q]),
+                history[q].stress + material.stress(strain_increments[q]),
                 strains[q] + strain_increments[q],
                 damage_values[q],
                 k,

@@ -6,6 +6,8 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <algorithm>
+
 namespace VPContact
 {
   template <int dim>
@@ -102,6 +104,24 @@ namespace VPContact
                                   boundary_conditions.contact_boundary_ids(),
                                   locally_relevant_dofs);
         make_constraints(0., nullptr);
+
+        // The multipliers are read at the contact nodes only, so the
+        // residual is assembled only on the cells that hold one.
+        contact_cells.clear();
+        const IndexSet contact_dofs
+          = friction_active_set.node_dofs(dof_handler.n_dofs());
+        std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(dof_indices);
+              if (std::any_of(dof_indices.begin(),
+                              dof_indices.end(),
+                              [&](const auto dof) {
+                                return contact_dofs.is_element(dof);
+                              }))
+                contact_cells.push_back(cell);
+            }
         residual_assembly.reinit(locally_owned_dofs,
                                  locally_relevant_dofs,
                                  mpi_communicator,

@@ -46,7 +46,7 @@ namespace VPContact
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
-              auto &point = *history[q];
+              auto &point = history[q];
               if (implicit)
                 point.stress
                   = implicit_stress_update(
@@ -120,7 +120,7 @@ namespace VPContact
           double                  volume = 0;
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
-              average += history[q]->stress * fe_values.JxW(q);
+              average += history[q].stress * fe_values.JxW(q);
               volume += fe_values.JxW(q);
             }
           average /= volume;
@@ -149,8 +149,8 @@ namespace VPContact
           fe_values.reinit(cell);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
-            energy += 0.5 * (compliance * history[q]->stress)
-                      * history[q]->stress * fe_values.JxW(q);
+            energy += 0.5 * (compliance * history[q].stress)
+                      * history[q].stress * fe_values.JxW(q);
         }
     return Utilities::MPI::sum(energy, mpi_communicator);
   }
@@ -172,7 +172,7 @@ namespace VPContact
           for (const unsigned int q : fe_values.quadrature_point_indices())
             error = std::max(
               error,
-              (history[q]->stress
+              (history[q].stress
                - verification.exact_stress(fe_values.quadrature_point(q), time))
                 .norm());
         }

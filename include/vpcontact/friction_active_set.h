@@ -114,6 +114,11 @@ namespace VPContact
     bool
     empty() const;
 
+    /// The degrees of freedom of the contact nodes this rank sees (of a
+    /// DoFHandler with @p n_dofs of them).
+    IndexSet
+    node_dofs(const types::global_dof_index n_dofs) const;
+
     /**
      * For checkpoints: write the set of every owned contact node into
      * @p state (a vector on all dofs): its status (1 stick, 2 slip) into

@@ -7,8 +7,8 @@
 #include <vpcontact/checkpointing.h>
 #include <vpcontact/convergence_table.h>
 #include <vpcontact/damage_bounds.h>
-#include <vpcontact/damage_system.h>
 #include <vpcontact/damage_model.h>
+#include <vpcontact/damage_system.h>
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/friction_active_set.h>
 #include <vpcontact/geometry.h>
@@ -211,6 +211,9 @@ namespace VPContact
     assemble_damage(const bool matrix);
     void
     solve_damage(const unsigned int n);
+    unsigned int
+    solve_damage_with_sets(const TrilinosWrappers::MPI::Vector &step_rhs,
+                           const double                         tolerance);
     void
     store_damage(const unsigned int n);
     void
@@ -312,6 +315,8 @@ namespace VPContact
     /// that assembly writes (with ghost entries), and a ghosted copy.
     TrilinosWrappers::MPI::Vector residual_assembly;
     TrilinosWrappers::MPI::Vector residual;
+    /// The locally owned cells with a contact node, where r is assembled.
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> contact_cells;
 
     StressHistory<dim> stress_history;
 
@@ -321,8 +326,8 @@ namespace VPContact
     // The damage step (damage scenes only): its linear algebra on the
     // damage degrees of freedom alone, its active set, and its vectors, all
     // in the compact numbering of damage_system.
-    DamageSystem<dim>             damage_system;
-    DamageBounds                  damage_bounds;
+    DamageSystem<dim> damage_system;
+    DamageBounds      damage_bounds;
     /// zeta_{n-1} and zeta (owned), and a ghosted copy of zeta.
     TrilinosWrappers::MPI::Vector damage_old;
     TrilinosWrappers::MPI::Vector damage_owned;
@@ -339,9 +344,9 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector damage_residual_owned;
     TrilinosWrappers::MPI::Vector damage_residual;
     TrilinosWrappers::MPI::Vector lumped_mass;
-    unsigned int                      last_damage_iterations = 0;
-    double                            last_damage_clip       = 0;
-    double                            max_damage_violation   = 0;
+    unsigned int                  last_damage_iterations = 0;
+    double                        last_damage_clip       = 0;
+    double                        max_damage_violation   = 0;
 
     Statistics   statistics;
     unsigned int last_linear_iterations     = 0;

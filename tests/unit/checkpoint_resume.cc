@@ -143,8 +143,8 @@ namespace
               {
                 double x[QuadraturePointHistory<2>::n_values];
                 double y[QuadraturePointHistory<2>::n_values];
-                points_a[q]->write_to(x);
-                points_b[q]->write_to(y);
+                points_a[q].write_to(x);
+                points_b[q].write_to(y);
                 for (unsigned int i = 0; i < std::size(x); ++i)
                   {
                     history_largest = std::max(history_largest, std::abs(x[i]));
