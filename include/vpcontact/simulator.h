@@ -211,6 +211,8 @@ namespace VPContact
     assemble_damage(const bool matrix);
     void
     solve_damage(const unsigned int n);
+    bool
+    find_damage_sets_fast(const TrilinosWrappers::MPI::Vector &step_rhs);
     unsigned int
     solve_damage_with_sets(const TrilinosWrappers::MPI::Vector &step_rhs,
                            const double                         tolerance);
