@@ -28,90 +28,16 @@ namespace VPContact
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first == component)
         damage_shape_functions.push_back(i);
-    const unsigned int n_shape = damage_shape_functions.size();
 
-    // The damage dofs this rank sees, and the owned ones in the order of
-    // the FESystem: they get the compact indices first, first + 1, ...
-    damage_dofs.clear();
-    damage_dofs.set_size(dof_handler.n_dofs());
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          cell->get_dof_indices(dofs);
-          for (const unsigned int i : damage_shape_functions)
-            damage_dofs.add_index(dofs[i]);
-        }
-    damage_dofs.compress();
-    IndexSet owned_damage_dofs = damage_dofs & locally_owned_dofs;
-    compact_owned              = Utilities::MPI::create_ascending_partitioning(
-      communicator,
-      owned_damage_dofs
-        .n_elements())[Utilities::MPI::this_mpi_process(communicator)];
-
-    // The compact index of every relevant damage dof, through a ghosted
-    // FESystem vector that holds it (exact in a double up to 2^53).
-    TrilinosWrappers::MPI::Vector index_owned(locally_owned_dofs, communicator);
-    full_position.clear();
-    {
-      types::global_dof_index next = compact_owned.nth_index_in_set(0);
-      for (const auto dof : owned_damage_dofs)
-        {
-          index_owned(dof) = static_cast<double>(next++);
-          full_position.push_back(locally_owned_dofs.index_within_set(dof));
-        }
-    }
-    index_owned.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector index(locally_owned_dofs,
-                                        locally_relevant_dofs,
-                                        communicator);
-    index                 = index_owned;
-    const auto to_compact = [&index](const types::global_dof_index dof) {
-      return static_cast<types::global_dof_index>(std::llround(index(dof)));
-    };
-
-    const types::global_dof_index n_compact = compact_owned.size();
-    compact_relevant                        = IndexSet(n_compact);
-    for (const auto dof : damage_dofs)
-      compact_relevant.add_index(to_compact(dof));
-    compact_relevant.compress();
-
-    cell_dofs.assign(dof_handler.get_triangulation().n_active_cells() * n_shape,
-                     numbers::invalid_dof_index);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int j = 0; j < n_shape; ++j)
-            cell_dofs[cell->active_cell_index() * n_shape + j]
-              = to_compact(dofs[damage_shape_functions[j]]);
-        }
-
-    // The hanging node constraints of the FESystem, translated. A hanging
-    // damage node depends on damage nodes of a cell this rank sees, so its
-    // parents are relevant here too.
-    AffineConstraints<double> full_constraints(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, full_constraints);
-    full_constraints.close();
-    constraints.clear();
-    constraints.reinit(compact_relevant);
-    for (const auto dof : damage_dofs)
-      if (full_constraints.is_constrained(dof))
-        {
-          const auto line = to_compact(dof);
-          constraints.add_line(line);
-          for (const auto &[parent, weight] :
-               *full_constraints.get_constraint_entries(dof))
-            {
-              AssertThrow(locally_relevant_dofs.is_element(parent),
-                          ExcInternalError());
-              constraints.add_entry(line, to_compact(parent), weight);
-            }
-        }
-    constraints.close();
+    const TrilinosWrappers::MPI::Vector index
+      = number_dofs(dof_handler,
+                    locally_owned_dofs,
+                    locally_relevant_dofs,
+                    communicator);
+    make_hanging_node_constraints(dof_handler, locally_relevant_dofs, index);
 
     DynamicSparsityPattern               dsp(compact_relevant);
-    std::vector<types::global_dof_index> indices(n_shape);
+    std::vector<types::global_dof_index> indices;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -124,6 +50,113 @@ namespace VPContact
                                                compact_relevant);
     system_matrix.reinit(compact_owned, compact_owned, dsp, communicator);
     masked.reinit(compact_owned, communicator);
+  }
+
+
+
+  template <int dim>
+  TrilinosWrappers::MPI::Vector
+  DamageSystem<dim>::number_dofs(const DoFHandler<dim> &dof_handler,
+                                 const IndexSet        &locally_owned_dofs,
+                                 const IndexSet        &locally_relevant_dofs,
+                                 const MPI_Comm         communicator)
+  {
+    // The damage dofs this rank sees, and the owned ones in the order of
+    // the FESystem: they get the compact indices first, first + 1, ...
+    damage_dofs.clear();
+    damage_dofs.set_size(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dofs(
+      dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (const unsigned int i : damage_shape_functions)
+            damage_dofs.add_index(dofs[i]);
+        }
+    damage_dofs.compress();
+    const IndexSet owned_damage_dofs = damage_dofs & locally_owned_dofs;
+    compact_owned = Utilities::MPI::create_ascending_partitioning(
+      communicator,
+      owned_damage_dofs
+        .n_elements())[Utilities::MPI::this_mpi_process(communicator)];
+
+    // The compact index of every relevant damage dof, through a ghosted
+    // FESystem vector that holds it (exact in a double up to 2^53).
+    TrilinosWrappers::MPI::Vector index_owned(locally_owned_dofs, communicator);
+    full_position.clear();
+    types::global_dof_index next = compact_owned.nth_index_in_set(0);
+    for (const auto dof : owned_damage_dofs)
+      {
+        index_owned(dof) = static_cast<double>(next++);
+        full_position.push_back(locally_owned_dofs.index_within_set(dof));
+      }
+    index_owned.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector index(locally_owned_dofs,
+                                        locally_relevant_dofs,
+                                        communicator);
+    index = index_owned;
+
+    compact_relevant = IndexSet(compact_owned.size());
+    for (const auto dof : damage_dofs)
+      compact_relevant.add_index(to_compact(index, dof));
+    compact_relevant.compress();
+
+    const unsigned int n_shape = damage_shape_functions.size();
+    cell_dofs.assign(dof_handler.get_triangulation().n_active_cells() * n_shape,
+                     numbers::invalid_dof_index);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int j = 0; j < n_shape; ++j)
+            cell_dofs[cell->active_cell_index() * n_shape + j]
+              = to_compact(index, dofs[damage_shape_functions[j]]);
+        }
+    return index;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  DamageSystem<dim>::to_compact(const TrilinosWrappers::MPI::Vector &index,
+                                const types::global_dof_index        dof)
+  {
+    return static_cast<types::global_dof_index>(std::llround(index(dof)));
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::make_hanging_node_constraints(
+    const DoFHandler<dim>               &dof_handler,
+    const IndexSet                      &locally_relevant_dofs,
+    const TrilinosWrappers::MPI::Vector &index)
+  {
+    // The hanging node constraints of the FESystem, translated. A hanging
+    // damage node depends on damage nodes of a cell this rank sees, so its
+    // parents are relevant here too.
+    AffineConstraints<double> full_constraints(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, full_constraints);
+    full_constraints.close();
+    constraints.clear();
+    constraints.reinit(compact_relevant);
+    for (const auto dof : damage_dofs)
+      if (full_constraints.is_constrained(dof))
+        {
+          const auto line = to_compact(index, dof);
+          constraints.add_line(line);
+          for (const auto &[parent, weight] :
+               *full_constraints.get_constraint_entries(dof))
+            {
+              AssertThrow(locally_relevant_dofs.is_element(parent),
+                          ExcInternalError());
+              constraints.add_entry(line, to_compact(index, parent), weight);
+            }
+        }
+    constraints.close();
   }
 
 

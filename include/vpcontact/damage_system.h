@@ -118,6 +118,24 @@ namespace VPContact
           const unsigned int                   max_iterations) const;
 
   private:
+    /// Sets the index sets, full_position and cell_dofs; returns a ghosted
+    /// FESystem vector holding the compact index of every relevant damage
+    /// dof.
+    TrilinosWrappers::MPI::Vector
+    number_dofs(const DoFHandler<dim> &dof_handler,
+                const IndexSet        &locally_owned_dofs,
+                const IndexSet        &locally_relevant_dofs,
+                const MPI_Comm         communicator);
+
+    static types::global_dof_index
+    to_compact(const TrilinosWrappers::MPI::Vector &index,
+               const types::global_dof_index        dof);
+
+    void
+    make_hanging_node_constraints(const DoFHandler<dim> &dof_handler,
+                                  const IndexSet        &locally_relevant_dofs,
+                                  const TrilinosWrappers::MPI::Vector &index);
+
     IndexSet compact_owned;
     IndexSet compact_relevant;
     IndexSet damage_dofs;
