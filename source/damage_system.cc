@@ -157,6 +157,10 @@ namespace VPContact
             }
         }
     constraints.close();
+    hanging_positions.clear();
+    for (const auto dof : compact_owned)
+      if (constraints.is_constrained(dof))
+        hanging_positions.push_back(local_position(dof));
   }
 
 
@@ -216,6 +220,15 @@ namespace VPContact
   DamageSystem<dim>::hanging_node_constraints() const
   {
     return constraints;
+  }
+
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  DamageSystem<dim>::hanging_node_positions() const
+  {
+    return hanging_positions;
   }
 
 

@@ -446,10 +446,7 @@ namespace VPContact
     // The held nodes: hanging nodes (change 0 in the solve, set from their
     // parents after it) and the nodes at a bound (their change is
     // prescribed).
-    std::vector<unsigned int> held;
-    for (const auto dof : damage_system.owned())
-      if (hanging.is_constrained(dof))
-        held.push_back(damage_system.local_position(dof));
+    std::vector<unsigned int>     held = damage_system.hanging_node_positions();
     TrilinosWrappers::MPI::Vector bound_change(damage_old);
     bound_change = 0.;
     for (const auto &[dof, change] : damage_bounds.held_changes(damage_old))

@@ -149,8 +149,8 @@ namespace VPContact
           fe_values.reinit(cell);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
-            energy += 0.5 * (compliance * history[q].stress)
-                      * history[q].stress * fe_values.JxW(q);
+            energy += 0.5 * (compliance * history[q].stress) * history[q].stress
+                      * fe_values.JxW(q);
         }
     return Utilities::MPI::sum(energy, mpi_communicator);
   }

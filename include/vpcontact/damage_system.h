@@ -77,6 +77,11 @@ namespace VPContact
     const AffineConstraints<double> &
     hanging_node_constraints() const;
 
+    /// The local positions (see local_position()) of the owned hanging
+    /// nodes, which every solve holds.
+    const std::vector<unsigned int> &
+    hanging_node_positions() const;
+
     /// The position of an owned compact index in the local vector entries.
     unsigned int
     local_position(const types::global_dof_index compact_index) const;
@@ -146,6 +151,7 @@ namespace VPContact
     /// The compact indices of each locally owned cell, by active cell index.
     std::vector<types::global_dof_index> cell_dofs;
     AffineConstraints<double>            constraints;
+    std::vector<unsigned int>            hanging_positions;
 
     TrilinosWrappers::SparseMatrix                     system_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
