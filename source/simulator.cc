@@ -51,6 +51,7 @@ namespace VPContact
     InitialConditions::declare_parameters(prm);
     TimeDiscretization::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
+    IncrementPredictor::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
     MeshRefinement<dim>::declare_parameters(prm);
@@ -89,6 +90,7 @@ namespace VPContact
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
+    increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
     mesh_refinement.parse_parameters(prm);
@@ -312,6 +314,11 @@ namespace VPContact
     // the start (warm start). The matrix changes only when a node enters or
     // leaves the stick set; then it is reassembled with the new constraints.
     last_active_set_iterations = 0;
+    // The first start vector: the increments of the last steps
+    // extrapolated (see IncrementPredictor); the active-set iterations of
+    // a step then start from the previous iterate.
+    if (with_viscoplastic_rate)
+      increment_predictor.predict(increment_owned);
     for (unsigned int iteration = 1;; ++iteration)
       {
         assemble_rhs(time, with_viscoplastic_rate);
@@ -319,8 +326,6 @@ namespace VPContact
           friction_active_set.add_slip_forces(constraints, rhs);
         {
           TimerOutput::Scope t(computing_timer, "Solve");
-          // The previous increment is the start vector: in a slowly loaded
-          // quasistatic run consecutive increments are alike.
           last_linear_iterations
             = linear_solver.solve(stiffness_matrix, increment_owned, rhs);
           constraints.distribute(increment_owned);
@@ -363,6 +368,8 @@ namespace VPContact
                            + " is not finite. The output up to the previous "
                              "step is complete in "
                            + output_writer.directory() + "."));
+    if (with_viscoplastic_rate)
+      increment_predictor.record(increment_owned);
     solution_owned += increment_owned;
     solution = solution_owned;
   }

@@ -4,15 +4,19 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 
+#include <array>
+
 namespace VPContact
 {
   namespace
   {
     // The vectors in a checkpoint, in this order: u_n and zeta_n (the
-    // solution), du_n (the start vector of the next solve) and the active
-    // sets as an indicator vector (FrictionActiveSet::write_state() and
-    // DamageBounds::write_state() use different components).
-    constexpr unsigned int n_checkpoint_vectors = 3;
+    // solution), du_n, du_{n-1} and du_{n-2} (the increments from which
+    // the start vector of the next solve is extrapolated, see
+    // IncrementPredictor) and the active sets as an indicator vector
+    // (FrictionActiveSet::write_state() and DamageBounds::write_state() use
+    // different components).
+    constexpr unsigned int n_checkpoint_vectors = 5;
   } // namespace
 
 
@@ -43,12 +47,17 @@ namespace VPContact
                                        locally_relevant_dofs,
                                        mpi_communicator);
     sets = sets_owned;
-    TrilinosWrappers::MPI::Vector last_increment(locally_owned_dofs,
-                                                 locally_relevant_dofs,
-                                                 mpi_communicator);
-    last_increment = increment_owned;
+    std::array<TrilinosWrappers::MPI::Vector, 3> increments;
+    for (unsigned int i = 0; i < increments.size(); ++i)
+      {
+        increments[i].reinit(locally_owned_dofs,
+                             locally_relevant_dofs,
+                             mpi_communicator);
+        increments[i]
+          = (i == 0 ? increment_owned : increment_predictor.recorded(i));
+      }
     const std::vector<const TrilinosWrappers::MPI::Vector *> vectors
-      = {&solution, &last_increment, &sets};
+      = {&solution, &increments[0], &increments[1], &increments[2], &sets};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
     CheckpointFields::save(triangulation,
                            dof_handler,
@@ -72,6 +81,7 @@ namespace VPContact
     metadata.counters       = verification.running_maxima();
     metadata.counters["max_friction_violation"] = max_friction_violation;
     metadata.counters["max_damage_violation"]   = max_damage_violation;
+    metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(metadata, mpi_communicator);
     pcout << "  checkpoint of step " << n << " written to "
@@ -168,7 +178,11 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector sets_owned(locally_owned_dofs,
                                              mpi_communicator);
     const std::vector<TrilinosWrappers::MPI::Vector *> vectors
-      = {&solution_owned, &increment_owned, &sets_owned};
+      = {&solution_owned,
+         &increment_owned,
+         &increment_predictor.recorded(1),
+         &increment_predictor.recorded(2),
+         &sets_owned};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
     CheckpointFields::load(triangulation,
                            dof_handler,
@@ -218,8 +232,11 @@ namespace VPContact
                              + name + " in its checkpoint.json."));
       return found->second;
     };
-    max_friction_violation = counter("max_friction_violation");
-    max_damage_violation   = counter("max_damage_violation");
+    max_friction_violation          = counter("max_friction_violation");
+    max_damage_violation            = counter("max_damage_violation");
+    increment_predictor.recorded(0) = increment_owned;
+    increment_predictor.set_n_recorded(
+      static_cast<unsigned int>(counter("recorded_increments")));
 
     pcout << "Resuming from the checkpoint in " << folder << ": step "
           << checkpoint.step << ", t = " << checkpoint.time;

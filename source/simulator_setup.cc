@@ -137,6 +137,7 @@ namespace VPContact
                     locally_relevant_dofs,
                     mpi_communicator);
     increment_owned.reinit(locally_owned_dofs, mpi_communicator);
+    increment_predictor.reinit(locally_owned_dofs, mpi_communicator);
     newton_update.reinit(locally_owned_dofs, mpi_communicator);
     increment.reinit(locally_owned_dofs,
                      locally_relevant_dofs,

@@ -20,7 +20,7 @@ namespace VPContact
   struct CheckpointMetadata
   {
     /// The version of this layout; a checkpoint of another one is refused.
-    static constexpr unsigned int format_version = 1;
+    static constexpr unsigned int format_version = 2;
 
     /// The last completed time step and its time t_step.
     unsigned int step = 0;

@@ -12,6 +12,7 @@
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/friction_active_set.h>
 #include <vpcontact/geometry.h>
+#include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
 #include <vpcontact/linear_solver.h>
 #include <vpcontact/mesh_refinement.h>
@@ -268,6 +269,7 @@ namespace VPContact
     InitialConditions      initial_conditions;
     TimeDiscretization     time_discretization;
     LinearSolver           linear_solver;
+    IncrementPredictor     increment_predictor;
     OutputWriter<dim>      output_writer;
     Verification<dim>      verification;
     MeshRefinement<dim>    mesh_refinement;

@@ -152,7 +152,7 @@ namespace VPContact
     parallel::distributed::Triangulation<2> triangulation;
     FESystem<2>                             fe;
     DoFHandler<2>                           dof_handler;
-    /// The solution, the last increment and the active sets.
+    /// The solution, the last three increments and the active sets.
     std::vector<TrilinosWrappers::MPI::Vector> vectors;
     StressHistory<2>                           history;
   };
@@ -171,7 +171,7 @@ namespace VPContact
     geometry.create_coarse_mesh(state.triangulation);
     state.triangulation.load(folder + "/mesh");
     state.dof_handler.distribute_dofs(state.fe);
-    state.vectors.resize(3);
+    state.vectors.resize(5);
     std::vector<TrilinosWrappers::MPI::Vector *> pointers;
     for (auto &v : state.vectors)
       {
