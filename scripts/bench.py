@@ -45,12 +45,32 @@ end
                             r"([0-9.e+-]+)s", out).group(1))
     floor = re.search(r"one displacement solve takes ([0-9.e+-]+) s \((\d+) CG"
                       r" iterations, (\d+) dofs", out)
+    kernels = re.search(r"one matrix-vector product ([0-9.e+-]+) ms, one "
+                        r"preconditioner application ([0-9.e+-]+) ms", out)
     memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
     return dict(size=size, ranks=ranks, total=total, phases=phases,
                 damage_solves=calls.get("Damage solve", 0) / steps,
                 floor=float(floor.group(1)), floor_its=int(floor.group(2)),
                 dofs=int(floor.group(3)),
+                matvec=float(kernels.group(1)), vcycle=float(kernels.group(2)),
                 memory=int(memory.group(1)) / 1024 if memory else float("nan"))
+
+
+def bandwidth():
+    """Best of 5 of the triad rate of scripts/bandwidth.cc in GB/s: one copy
+    alone, and the sum over one copy per core run at the same time."""
+    binary = "/tmp/vpcontact_bandwidth"
+    subprocess.run(["g++", "-O2", "-o", binary, "scripts/bandwidth.cc"],
+                   check=True)
+    one, together = 0., 0.
+    for _ in range(5):
+        one = max(one, float(subprocess.run(
+            [binary], capture_output=True, text=True, check=True).stdout))
+        copies = [subprocess.Popen([binary], stdout=subprocess.PIPE, text=True)
+                  for _ in range(os.cpu_count())]
+        together = max(together, sum(float(p.communicate()[0])
+                                     for p in copies))
+    return one, together
 
 
 results = []
@@ -59,6 +79,7 @@ for size in sizes:
     print(f"{size}^2, 1 rank: {results[-1]['total']:.1f} s", flush=True)
 results.append(run(sizes[-1], 2))
 print(f"{sizes[-1]}^2, 2 ranks: {results[-1]['total']:.1f} s", flush=True)
+bandwidth_one, bandwidth_all = bandwidth()
 
 groups = [("displacement: assembly", ["Assemble right-hand side",
                                       "Assemble residual", "Assemble matrix",
@@ -105,6 +126,19 @@ total only.
     big2 = results[-1]
     out.write(f"\nStrong scaling at {big2['size']}^2: 1 rank {big1['total']:.1f} s, "
               f"2 ranks {big2['total']:.1f} s, speed-up "
-              f"{big1['total'] / big2['total']:.2f}.\n")
+              f"{big1['total'] / big2['total']:.2f}. Per phase, 1 rank against "
+              "2: " + ", ".join(
+                  f"{g} x {sum(big1['phases'].get(k, 0) for k in keys) / max(1e-9, sum(big2['phases'].get(k, 0) for k in keys)):.2f}"
+                  for g, keys in groups) + ". The kernels of the solve, "
+              f"timed at the end of the run: one matrix-vector product "
+              f"{big1['matvec']:.2f} ms against {big2['matvec']:.2f} ms (x "
+              f"{big1['matvec'] / big2['matvec']:.2f}), one AMG V-cycle "
+              f"{big1['vcycle']:.2f} ms against {big2['vcycle']:.2f} ms (x "
+              f"{big1['vcycle'] / big2['vcycle']:.2f}).\n")
+    out.write(f"\nMemory bandwidth (`scripts/bandwidth.cc`, STREAM triad on "
+              f"3 x 64 MB, best of 5): one process alone "
+              f"{bandwidth_one:.1f} GB/s, {os.cpu_count()} processes at "
+              f"the same time {bandwidth_all:.1f} GB/s together, x "
+              f"{bandwidth_all / bandwidth_one:.2f}.\n")
     out.write(open("doc/performance_notes.md").read())
 print("wrote doc/performance.md")

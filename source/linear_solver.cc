@@ -150,6 +150,18 @@ namespace VPContact
 
 
 
+  void
+  LinearSolver::precondition(TrilinosWrappers::MPI::Vector       &dst,
+                             const TrilinosWrappers::MPI::Vector &src) const
+  {
+    if (solver_method == Method::cg_amg)
+      amg->vmult(dst, src);
+    else
+      direct->solve(dst, src);
+  }
+
+
+
   LinearSolver::Method
   LinearSolver::method() const
   {

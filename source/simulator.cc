@@ -389,9 +389,24 @@ namespace VPContact
     const unsigned int iterations
       = linear_solver.solve(stiffness_matrix, x, rhs);
     timer.stop();
+
+    // Its two kernels, each timed over ten applications: they tell how the
+    // solve scales with the ranks (scripts/bench compares them).
+    TrilinosWrappers::MPI::Vector y(x);
+    Timer                         matvec_timer;
+    for (unsigned int i = 0; i < 10; ++i)
+      stiffness_matrix.vmult(y, x);
+    matvec_timer.stop();
+    Timer preconditioner_timer;
+    for (unsigned int i = 0; i < 10; ++i)
+      linear_solver.precondition(y, rhs);
+    preconditioner_timer.stop();
     pcout << "Solve floor: one displacement solve takes " << timer.wall_time()
           << " s (" << iterations << " CG iterations, " << dof_handler.n_dofs()
-          << " dofs)" << std::endl;
+          << " dofs); one matrix-vector product "
+          << 100. * matvec_timer.wall_time()
+          << " ms, one preconditioner application "
+          << 100. * preconditioner_timer.wall_time() << " ms" << std::endl;
   }
 
 

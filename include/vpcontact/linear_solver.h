@@ -67,6 +67,12 @@ namespace VPContact
           TrilinosWrappers::MPI::Vector        &x,
           const TrilinosWrappers::MPI::Vector  &b);
 
+    /// One application of the preconditioner (AMG V-cycle) or, for the
+    /// direct solvers, one solve with the factors: dst = P^{-1} src.
+    void
+    precondition(TrilinosWrappers::MPI::Vector       &dst,
+                 const TrilinosWrappers::MPI::Vector &src) const;
+
     Method
     method() const;
 
