@@ -3,6 +3,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
+
 namespace VPContact
 {
   BoundStatus
@@ -84,6 +86,81 @@ namespace VPContact
         status[i] = next;
       }
     return Utilities::MPI::sum(n_changed, communicator);
+  }
+
+
+
+  std::vector<bool>
+  DamageBounds::front(const TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    // With marks m = 1 on the nodes below 1, (K m)_i sums the entries K_ij
+    // of the marked neighbours j of node i. Where kappa A is an M-matrix
+    // (Q1 cells of aspect ratio up to about 1.4) these are negative, so the
+    // sum is nonzero exactly on the neighbours; elsewhere a neighbour may
+    // be missed, which costs only the iteration this was to save. The
+    // product also reaches across ranks.
+    TrilinosWrappers::MPI::Vector marks(matrix.locally_owned_domain_indices(),
+                                        communicator);
+    TrilinosWrappers::MPI::Vector reach(marks);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i] && status[i] != BoundStatus::upper)
+        marks(dofs[i]) = 1.;
+    marks.compress(VectorOperation::insert);
+    matrix.vmult(reach, marks);
+    std::vector<bool> on_front(dofs.size(), false);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      on_front[i]
+        = (owned[i] && status[i] == BoundStatus::upper && reach(dofs[i]) != 0.);
+    return on_front;
+  }
+
+
+
+  void
+  DamageBounds::begin_step(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    upper_at_start.resize(dofs.size());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      upper_at_start[i] = (status[i] == BoundStatus::upper);
+    const auto on_front = front(matrix);
+    front_size          = Utilities::MPI::sum(
+      static_cast<unsigned int>(
+        std::count(on_front.begin(), on_front.end(), true)),
+      communicator);
+  }
+
+
+
+  double
+  DamageBounds::rings_moved() const
+  {
+    unsigned int n_left = 0;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      n_left
+        += (owned[i] && upper_at_start[i] && status[i] != BoundStatus::upper);
+    n_left = Utilities::MPI::sum(n_left, communicator);
+    return (front_size > 0 ? static_cast<double>(n_left) / front_size : 0.);
+  }
+
+
+
+  unsigned int
+  DamageBounds::free_ahead_of_front(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const unsigned int                    rings)
+  {
+    unsigned int n_freed = 0;
+    for (unsigned int ring = 0; ring < rings; ++ring)
+      {
+        const auto on_front = front(matrix);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (on_front[i])
+            {
+              status[i] = BoundStatus::free;
+              ++n_freed;
+            }
+      }
+    return Utilities::MPI::sum(n_freed, communicator);
   }
 
 

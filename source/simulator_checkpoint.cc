@@ -81,6 +81,7 @@ namespace VPContact
     metadata.counters       = verification.running_maxima();
     metadata.counters["max_friction_violation"] = max_friction_violation;
     metadata.counters["max_damage_violation"]   = max_damage_violation;
+    metadata.counters["damage_rings_ahead"]     = damage_rings_ahead;
     metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(metadata, mpi_communicator);
@@ -232,8 +233,10 @@ namespace VPContact
                              + name + " in its checkpoint.json."));
       return found->second;
     };
-    max_friction_violation          = counter("max_friction_violation");
-    max_damage_violation            = counter("max_damage_violation");
+    max_friction_violation = counter("max_friction_violation");
+    max_damage_violation   = counter("max_damage_violation");
+    damage_rings_ahead
+      = static_cast<unsigned int>(counter("damage_rings_ahead"));
     increment_predictor.recorded(0) = increment_owned;
     increment_predictor.set_n_recorded(
       static_cast<unsigned int>(counter("recorded_increments")));

@@ -13,6 +13,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <utility>
@@ -118,7 +119,8 @@ namespace VPContact
     TimerOutput::Scope t(computing_timer, "Setup");
     // As in setup_dofs(): the bound sets of an earlier mesh must not survive
     // into this one.
-    damage_bounds = DamageBounds();
+    damage_bounds      = DamageBounds();
+    damage_rings_ahead = 0;
     damage_system.reinit(dof_handler,
                          dim,
                          locally_owned_dofs,
@@ -354,6 +356,7 @@ namespace VPContact
     // First the fast search (see find_damage_sets_fast()); should it not
     // settle, the plain primal-dual active set method from the sets of the
     // previous step, every solve to the Solver tolerance.
+    damage_bounds.begin_step(K);
     const DamageBounds previous_sets = damage_bounds;
     if (!find_damage_sets_fast(step_rhs))
       {
@@ -386,6 +389,8 @@ namespace VPContact
           }
       }
 
+    damage_rings_ahead
+      = static_cast<unsigned int>(std::floor(damage_bounds.rings_moved()));
     store_damage(n);
   }
 
@@ -405,6 +410,15 @@ namespace VPContact
     damage_bounds.update(damage_residual,
                          damage,
                          time_discretization.step_size());
+
+    // Then the front of the upper set is moved ahead by as many whole rings
+    // as it moved in the previous step (see
+    // DamageBounds::free_ahead_of_front()). Measured on the paper scene,
+    // 100 steps: at 256^2 cells 444 damage solves instead of 512; at 128^2,
+    // where the front moves by less than a ring in most steps, 405 instead
+    // of 399.
+    damage_bounds.free_ahead_of_front(damage_system.matrix(),
+                                      damage_rings_ahead);
 
     // While the sets still change, the solves that find them need not be
     // exact: their multipliers only decide the next sets. The first few

@@ -4,6 +4,7 @@
 #define vpcontact_damage_bounds_h
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <utility>
@@ -85,6 +86,37 @@ namespace VPContact
            const TrilinosWrappers::MPI::Vector &damage,
            const double                         time_step);
 
+    /**
+     * The motion of the front of the upper set (ζ = 1) over a step, in
+     * rings of nodes. begin_step() records the upper set and the number of
+     * its nodes on the front (those with a neighbour below 1: an entry of
+     * @p matrix, the damage matrix in the numbering of the bounds);
+     * rings_moved() returns the number of nodes that have left the upper
+     * set since, divided by that front size.
+     */
+    void
+    begin_step(const TrilinosWrappers::SparseMatrix &matrix);
+
+    double
+    rings_moved() const;
+
+    /**
+     * Free the nodes of the upper set within @p rings rings of the nodes
+     * below 1. Returns the number of nodes freed, on all ranks.
+     *
+     * Why: a node leaves the upper set only once its multiplier turns
+     * negative, which needs a free neighbour, so every semismooth Newton
+     * iteration moves the front by one ring, and a step moves it by more
+     * rings the finer the mesh. Freed ahead of time, by as many rings as the
+     * front moved in the previous step, the nodes that should stay at 1 come
+     * out above 1 in the next solve and go back in one iteration (a local
+     * test); the sets found at the end are the exact ones, confirmed by an
+     * exact solve as always.
+     */
+    unsigned int
+    free_ahead_of_front(const TrilinosWrappers::SparseMatrix &matrix,
+                        const unsigned int                    rings);
+
     /// Global sizes of the lower and upper sets.
     std::pair<unsigned int, unsigned int>
     count() const;
@@ -104,7 +136,14 @@ namespace VPContact
     std::vector<double>                  mass;
     std::vector<bool>                    owned;
     std::vector<BoundStatus>             status;
-    MPI_Comm                             communicator = MPI_COMM_WORLD;
+    std::vector<bool>                    upper_at_start;
+    unsigned int                         front_size = 0;
+
+    /// The owned upper nodes with a neighbour below 1 (one matrix-vector
+    /// product with @p matrix).
+    std::vector<bool>
+             front(const TrilinosWrappers::SparseMatrix &matrix) const;
+    MPI_Comm communicator = MPI_COMM_WORLD;
   };
 } // namespace VPContact
 

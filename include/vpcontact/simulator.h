@@ -349,8 +349,12 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector damage_residual;
     TrilinosWrappers::MPI::Vector lumped_mass;
     unsigned int                  last_damage_iterations = 0;
-    double                        last_damage_clip       = 0;
-    double                        max_damage_violation   = 0;
+    /// How many whole rings of nodes the front of the upper damage bound
+    /// moved in the previous step (DamageBounds::rings_moved()): the next
+    /// step frees as many ahead of it.
+    unsigned int damage_rings_ahead   = 0;
+    double       last_damage_clip     = 0;
+    double       max_damage_violation = 0;
 
     Statistics   statistics;
     unsigned int last_linear_iterations     = 0;
