@@ -46,6 +46,8 @@ namespace VPContact
         owned.push_back(locally_owned_dofs.is_element(dof));
       }
     status.assign(dofs.size(), BoundStatus::free);
+    upper_at_start.assign(dofs.size(), false);
+    front_size = 0;
   }
 
 
