@@ -2,6 +2,8 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/linear_solver.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
@@ -14,7 +16,7 @@ namespace VPContact
     {
       prm.declare_entry("Linear solver",
                         "CG with AMG",
-                        Patterns::Selection("CG with AMG|direct|MUMPS"),
+                        Patterns::Selection("CG with AMG|direct|MUMPS|Cholesky"),
                         "'CG with AMG': conjugate gradients preconditioned by "
                         "Trilinos ML algebraic multigrid, scales to large "
                         "meshes and many ranks. 'direct': Trilinos Amesos KLU "
@@ -22,7 +24,10 @@ namespace VPContact
                         "(it gathers the matrix). 'MUMPS': the multifrontal "
                         "MUMPS factorization through Amesos (distributed), "
                         "for medium meshes where one factorization per "
-                        "matrix, reused by every step, beats CG; see "
+                        "matrix, reused by every step, beats CG. 'Cholesky': "
+                        "the supernodal sparse Cholesky factorization of "
+                        "SuiteSparse CHOLMOD, serial runs only, the fastest "
+                        "factorization on one process; see "
                         "doc/performance.md. Direct factorizations are "
                         "recomputed whenever the stick set changes.");
       prm.declare_entry("Relative tolerance",
@@ -46,7 +51,9 @@ namespace VPContact
   {
     prm.enter_subsection("Solver");
     const std::string method = prm.get("Linear solver");
-    solver_method = (method == "CG with AMG" ? Method::cg_amg : Method::direct);
+    solver_method      = (method == "CG with AMG" ? Method::cg_amg :
+                          method == "Cholesky"    ? Method::cholesky :
+                                                    Method::direct);
     direct_package     = (method == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
     relative_tolerance = prm.get_double("Relative tolerance");
     max_iterations     = prm.get_integer("Maximum linear iterations");
@@ -55,6 +62,16 @@ namespace VPContact
                             "Solver/Relative tolerance",
                             relative_tolerance,
                             "must be positive, e.g. 1e-10.");
+    // CHOLMOD factorizes on one process; under mpirun the matrix is split
+    // over the ranks, and MUMPS is the distributed factorization.
+    VPContactCheckParameter(solver_method != Method::cholesky
+                              || Utilities::MPI::n_mpi_processes(
+                                   MPI_COMM_WORLD)
+                                   == 1,
+                            "Solver/Linear solver",
+                            method,
+                            "is serial: run without mpirun, or choose MUMPS "
+                            "(distributed) or CG with AMG.");
   }
 
 
@@ -62,6 +79,7 @@ namespace VPContact
   void
   LinearSolver::clear()
   {
+    cholesky.reset();
     direct.reset();
     direct_control.reset();
     amg.reset();
@@ -87,6 +105,11 @@ namespace VPContact
         data.constant_modes        = constant_modes;
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
         amg->initialize(matrix, data);
+      }
+    else if (solver_method == Method::cholesky)
+      {
+        cholesky = std::make_unique<SparseCholesky>();
+        cholesky->factorize(matrix);
       }
     else
       {
@@ -120,6 +143,11 @@ namespace VPContact
     if (solver_method == Method::direct)
       {
         direct->solve(x, b);
+        return 1;
+      }
+    if (solver_method == Method::cholesky)
+      {
+        cholesky->solve(x, b);
         return 1;
       }
 
@@ -156,6 +184,8 @@ namespace VPContact
   {
     if (solver_method == Method::cg_amg)
       amg->vmult(dst, src);
+    else if (solver_method == Method::cholesky)
+      cholesky->solve(dst, src);
     else
       direct->solve(dst, src);
   }

@@ -9,6 +9,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <vpcontact/sparse_cholesky.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -30,7 +32,8 @@ namespace VPContact
     enum class Method
     {
       cg_amg,
-      direct
+      direct,
+      cholesky
     };
 
     static void
@@ -92,6 +95,8 @@ namespace VPContact
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     std::unique_ptr<SolverControl>                     direct_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect>    direct;
+    /// The serial sparse Cholesky factors (method cholesky).
+    std::unique_ptr<SparseCholesky> cholesky;
   };
 } // namespace VPContact
 

@@ -1,0 +1,67 @@
+// A sparse Cholesky factorization (SuiteSparse CHOLMOD) of a symmetric
+// positive definite Trilinos matrix held whole on one process.
+#ifndef vpcontact_sparse_cholesky_h
+#define vpcontact_sparse_cholesky_h
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <cholmod.h>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * The factors L L^T = P K P^T of a symmetric positive definite matrix K,
+   * computed once by factorize() and applied by solve() as often as
+   * needed.
+   *
+   * CHOLMOD orders the unknowns to reduce fill (AMD or METIS, whichever
+   * fills less) and factorizes by supernodes, so most of its work is dense
+   * matrix products. A solve is two triangular sweeps, without the
+   * iterative refinement that UMFPACK does by default, so it costs about
+   * two passes over the factor. Only the upper triangle of K is read; K
+   * must be symmetric, which the displacement matrix is.
+   */
+  class SparseCholesky
+  {
+  public:
+    SparseCholesky();
+    ~SparseCholesky();
+    SparseCholesky(const SparseCholesky &) = delete;
+    SparseCholesky &
+    operator=(const SparseCholesky &) = delete;
+
+    /**
+     * Factorize @p matrix, which must live on one process. Throws with a
+     * message when it is not positive definite.
+     */
+    void
+    factorize(const TrilinosWrappers::SparseMatrix &matrix);
+
+    /// dst = K^{-1} src.
+    void
+    solve(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const;
+
+    /// Number of nonzeros of the factor L (for the run's report).
+    double
+    factor_nonzeros() const;
+
+  private:
+    void
+    release();
+
+    mutable cholmod_common common;
+    cholmod_factor        *factor = nullptr;
+    /// The right-hand side and the solution with its workspace, kept
+    /// between solves so that solve() allocates nothing.
+    mutable cholmod_dense *rhs       = nullptr;
+    mutable cholmod_dense *x         = nullptr;
+    mutable cholmod_dense *workspace = nullptr;
+    mutable cholmod_dense *e_work    = nullptr;
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,164 @@
+// The CHOLMOD factorization of the displacement matrix on one process.
+#include <vpcontact/sparse_cholesky.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <Epetra_CrsMatrix.h>
+
+#include <algorithm>
+#include <string>
+
+namespace VPContact
+{
+  SparseCholesky::SparseCholesky()
+  {
+    cholmod_l_start(&common);
+    // CHOLMOD's default ordering strategy: AMD, and METIS or nested
+    // dissection only when AMD fills too much. Measured on the paper scene
+    // at 512^2 cells (789507 unknowns) with OpenBLAS: 4.9 s for the
+    // analysis and the factorization, against 8.9 s with METIS alone and
+    // 7.0 s with CHOLMOD's nested dissection.
+    common.print = 0;
+  }
+
+
+
+  SparseCholesky::~SparseCholesky()
+  {
+    release();
+    cholmod_l_finish(&common);
+  }
+
+
+
+  void
+  SparseCholesky::release()
+  {
+    for (cholmod_dense **d : {&rhs, &x, &workspace, &e_work})
+      if (*d != nullptr)
+        cholmod_l_free_dense(d, &common);
+    if (factor != nullptr)
+      cholmod_l_free_factor(&factor, &common);
+  }
+
+
+
+  void
+  SparseCholesky::factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    release();
+    const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    const long              n      = epetra.NumMyRows();
+    AssertThrow(static_cast<types::global_dof_index>(n) == matrix.m(),
+                ExcMessage("The Cholesky factorization needs the whole "
+                           "displacement matrix on one process; under "
+                           "mpirun choose Solver/Linear solver = MUMPS or "
+                           "CG with AMG."));
+
+    // The rows of the upper triangle of K are the columns of its lower
+    // triangle; CHOLMOD reads a symmetric matrix from either (stype -1:
+    // lower triangle, by columns). On one process local and global column
+    // indices coincide.
+    long nnz = 0;
+    for (long row = 0; row < n; ++row)
+      {
+        int     length;
+        double *values;
+        int    *columns;
+        epetra.ExtractMyRowView(row, length, values, columns);
+        for (int j = 0; j < length; ++j)
+          nnz += (epetra.GCID(columns[j]) >= row);
+      }
+    cholmod_sparse *lower =
+      cholmod_l_allocate_sparse(n, n, nnz, 1, 1, -1, CHOLMOD_REAL, &common);
+    AssertThrow(lower != nullptr,
+                ExcMessage("CHOLMOD could not allocate the matrix (" +
+                           std::to_string(nnz) + " entries)."));
+    auto *column_start = static_cast<long *>(lower->p);
+    auto *row_index    = static_cast<long *>(lower->i);
+    auto *entry        = static_cast<double *>(lower->x);
+    long  k            = 0;
+    for (long row = 0; row < n; ++row)
+      {
+        column_start[row] = k;
+        int     length;
+        double *values;
+        int    *columns;
+        epetra.ExtractMyRowView(row, length, values, columns);
+        const long first = k;
+        for (int j = 0; j < length; ++j)
+          if (epetra.GCID(columns[j]) >= row)
+            {
+              row_index[k] = epetra.GCID(columns[j]);
+              entry[k]     = values[j];
+              ++k;
+            }
+        // Epetra keeps the columns of a row unsorted; CHOLMOD wants them
+        // sorted (lower->sorted = 1).
+        std::vector<std::pair<long, double>> sorted;
+        for (long e = first; e < k; ++e)
+          sorted.emplace_back(row_index[e], entry[e]);
+        std::sort(sorted.begin(), sorted.end());
+        for (long e = first; e < k; ++e)
+          {
+            row_index[e] = sorted[e - first].first;
+            entry[e]     = sorted[e - first].second;
+          }
+      }
+    column_start[n] = k;
+
+    factor = cholmod_l_analyze(lower, &common);
+    if (factor != nullptr)
+      cholmod_l_factorize(lower, factor, &common);
+    const int  status   = common.status;
+    const bool definite = factor != nullptr && factor->minor == factor->n;
+    cholmod_l_free_sparse(&lower, &common);
+    AssertThrow(status == CHOLMOD_OK && definite,
+                ExcMessage(
+                  "The Cholesky factorization of the displacement matrix "
+                  "failed (CHOLMOD status " +
+                  std::to_string(status) +
+                  (definite ? std::string(")") :
+                              "; the matrix is not positive definite at "
+                              "column " +
+                                std::to_string(factor ? factor->minor : 0) +
+                                ")") +
+                  ". Check the boundary conditions (a body that is not held "
+                  "has a singular matrix), or use Solver/Linear solver = "
+                  "CG with AMG."));
+
+    rhs = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &common);
+  }
+
+
+
+  void
+  SparseCholesky::solve(TrilinosWrappers::MPI::Vector       &dst,
+                        const TrilinosWrappers::MPI::Vector &src) const
+  {
+    Assert(factor != nullptr, ExcMessage("factorize() first"));
+    std::copy(src.begin(), src.end(), static_cast<double *>(rhs->x));
+    const int ok = cholmod_l_solve2(CHOLMOD_A,
+                                    factor,
+                                    rhs,
+                                    nullptr,
+                                    &x,
+                                    nullptr,
+                                    &workspace,
+                                    &e_work,
+                                    &common);
+    AssertThrow(ok == 1 && common.status == CHOLMOD_OK,
+                ExcMessage("CHOLMOD could not solve with the factors (status " +
+                           std::to_string(common.status) + ")."));
+    const double *values = static_cast<const double *>(x->x);
+    std::copy(values, values + x->nrow, dst.begin());
+  }
+
+
+
+  double
+  SparseCholesky::factor_nonzeros() const
+  {
+    return factor == nullptr ? 0. : common.lnz;
+  }
+} // namespace VPContact
