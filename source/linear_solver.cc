@@ -3,7 +3,6 @@
 #include <vpcontact/linear_solver.h>
 
 #include <deal.II/base/mpi.h>
-
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
@@ -16,7 +15,8 @@ namespace VPContact
     {
       prm.declare_entry("Linear solver",
                         "CG with AMG",
-                        Patterns::Selection("CG with AMG|direct|MUMPS|Cholesky"),
+                        Patterns::Selection(
+                          "CG with AMG|direct|MUMPS|Cholesky"),
                         "'CG with AMG': conjugate gradients preconditioned by "
                         "Trilinos ML algebraic multigrid, scales to large "
                         "meshes and many ranks. 'direct': Trilinos Amesos KLU "
@@ -51,9 +51,9 @@ namespace VPContact
   {
     prm.enter_subsection("Solver");
     const std::string method = prm.get("Linear solver");
-    solver_method      = (method == "CG with AMG" ? Method::cg_amg :
-                          method == "Cholesky"    ? Method::cholesky :
-                                                    Method::direct);
+    solver_method            = (method == "CG with AMG" ? Method::cg_amg :
+                                method == "Cholesky"    ? Method::cholesky :
+                                                          Method::direct);
     direct_package     = (method == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
     relative_tolerance = prm.get_double("Relative tolerance");
     max_iterations     = prm.get_integer("Maximum linear iterations");
@@ -65,12 +65,12 @@ namespace VPContact
     // CHOLMOD factorizes on one process; under mpirun the matrix is split
     // over the ranks, and MUMPS is the distributed factorization.
     VPContactCheckParameter(solver_method != Method::cholesky
-                              || Utilities::MPI::n_mpi_processes(
-                                   MPI_COMM_WORLD)
+                              || Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
                                    == 1,
                             "Solver/Linear solver",
                             method,
-                            "is serial: run without mpirun, or choose MUMPS "
+                            "factorizes on one process only: run without "
+                            "mpirun, or choose MUMPS "
                             "(distributed) or CG with AMG.");
   }
 

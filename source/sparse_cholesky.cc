@@ -4,7 +4,6 @@
 #include <deal.II/base/exceptions.h>
 
 #include <Epetra_CrsMatrix.h>
-
 #include <algorithm>
 #include <string>
 
@@ -19,6 +18,10 @@ namespace VPContact
     // analysis and the factorization, against 8.9 s with METIS alone and
     // 7.0 s with CHOLMOD's nested dissection.
     common.print = 0;
+    // L L^T also on small matrices, where CHOLMOD would otherwise choose a
+    // simplicial L D L^T, which goes through an indefinite matrix without
+    // complaint; L L^T stops at the first pivot that is not positive.
+    common.final_ll = 1;
   }
 
 
@@ -69,11 +72,11 @@ namespace VPContact
         for (int j = 0; j < length; ++j)
           nnz += (epetra.GCID(columns[j]) >= row);
       }
-    cholmod_sparse *lower =
-      cholmod_l_allocate_sparse(n, n, nnz, 1, 1, -1, CHOLMOD_REAL, &common);
+    cholmod_sparse *lower
+      = cholmod_l_allocate_sparse(n, n, nnz, 1, 1, -1, CHOLMOD_REAL, &common);
     AssertThrow(lower != nullptr,
-                ExcMessage("CHOLMOD could not allocate the matrix (" +
-                           std::to_string(nnz) + " entries)."));
+                ExcMessage("CHOLMOD could not allocate the matrix ("
+                           + std::to_string(nnz) + " entries)."));
     auto *column_start = static_cast<long *>(lower->p);
     auto *row_index    = static_cast<long *>(lower->i);
     auto *entry        = static_cast<double *>(lower->x);
@@ -111,21 +114,28 @@ namespace VPContact
     if (factor != nullptr)
       cholmod_l_factorize(lower, factor, &common);
     const int  status   = common.status;
-    const bool definite = factor != nullptr && factor->minor == factor->n;
+    const bool definite = factor == nullptr || status == CHOLMOD_OUT_OF_MEMORY
+                          || factor->minor == factor->n;
+    const long pivot = (factor != nullptr ? factor->minor + 1 : 0);
     cholmod_l_free_sparse(&lower, &common);
-    AssertThrow(status == CHOLMOD_OK && definite,
+    // Leave no half-made factor behind for solve() to use.
+    if (!definite || status != CHOLMOD_OK)
+      release();
+    AssertThrow(definite,
                 ExcMessage(
                   "The Cholesky factorization of the displacement matrix "
-                  "failed (CHOLMOD status " +
-                  std::to_string(status) +
-                  (definite ? std::string(")") :
-                              "; the matrix is not positive definite at "
-                              "column " +
-                                std::to_string(factor ? factor->minor : 0) +
-                                ")") +
-                  ". Check the boundary conditions (a body that is not held "
-                  "has a singular matrix), or use Solver/Linear solver = "
-                  "CG with AMG."));
+                  "broke down: the matrix is not positive definite (pivot "
+                  + std::to_string(pivot) + " of " + std::to_string(n)
+                  + " in the fill-reducing order is not positive). Check the "
+                    "boundary conditions: a body that is not held has a "
+                    "singular matrix."));
+    AssertThrow(status == CHOLMOD_OK,
+                ExcMessage("CHOLMOD could not factorize the displacement "
+                           "matrix (status "
+                           + std::to_string(status)
+                           + "; -2 means out of memory). Use Solver/Linear "
+                             "solver = CG with AMG, which needs far less "
+                             "memory."));
 
     rhs = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &common);
   }
@@ -148,8 +158,8 @@ namespace VPContact
                                     &e_work,
                                     &common);
     AssertThrow(ok == 1 && common.status == CHOLMOD_OK,
-                ExcMessage("CHOLMOD could not solve with the factors (status " +
-                           std::to_string(common.status) + ")."));
+                ExcMessage("CHOLMOD could not solve with the factors (status "
+                           + std::to_string(common.status) + ")."));
     const double *values = static_cast<const double *>(x->x);
     std::copy(values, values + x->nrow, dst.begin());
   }

@@ -3,13 +3,13 @@
 #ifndef vpcontact_linear_solver_h
 #define vpcontact_linear_solver_h
 
+#include <vpcontact/sparse_cholesky.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
-#include <vpcontact/sparse_cholesky.h>
 
 #include <memory>
 #include <string>

@@ -31,7 +31,8 @@ namespace VPContact
     ~SparseCholesky();
     SparseCholesky(const SparseCholesky &) = delete;
     SparseCholesky &
-    operator=(const SparseCholesky &) = delete;
+    operator=(const SparseCholesky &)
+      = delete;
 
     /**
      * Factorize @p matrix, which must live on one process. Throws with a

@@ -1,0 +1,97 @@
+// Unit test: the sparse Cholesky factorization (SparseCholesky, CHOLMOD).
+// For the 1d Laplacian tridiag(-1, 2, -1) of size n the solution of K x = e_1
+// is known, x_i = (n + 1 - i) / (n + 1), and K x = K y recovers any y to
+// round-off; a second solve with the same factors must do the same. A matrix
+// that is not positive definite is refused with a message that names the
+// column where the factorization broke down.
+#include <vpcontact/sparse_cholesky.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <cmath>
+#include <iostream>
+
+using namespace VPContact;
+
+namespace
+{
+  // The n x n tridiagonal matrix with @p diagonal and -1 beside it.
+  void
+  make_tridiagonal(TrilinosWrappers::SparseMatrix &matrix,
+                   const unsigned int              n,
+                   const std::vector<double>      &diagonal)
+  {
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = (i > 0 ? i - 1 : 0); j < std::min(n, i + 2); ++j)
+        dsp.add(i, j);
+    matrix.reinit(complete_index_set(n), dsp, MPI_COMM_WORLD);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        matrix.set(i, i, diagonal[i]);
+        if (i > 0)
+          matrix.set(i, i - 1, -1.);
+        if (i + 1 < n)
+          matrix.set(i, i + 1, -1.);
+      }
+    matrix.compress(VectorOperation::insert);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int               n = 50;
+  TrilinosWrappers::SparseMatrix   laplacian;
+  make_tridiagonal(laplacian, n, std::vector<double>(n, 2.));
+
+  SparseCholesky cholesky;
+  cholesky.factorize(laplacian);
+  std::cout << "n = " << n << ", nonzeros of L: " << cholesky.factor_nonzeros()
+            << " (a tridiagonal matrix fills nothing: 2n - 1 = " << 2 * n - 1
+            << ")" << std::endl;
+
+  // K x = e_1.
+  TrilinosWrappers::MPI::Vector b(complete_index_set(n), MPI_COMM_WORLD);
+  TrilinosWrappers::MPI::Vector x(b);
+  b(0) = 1.;
+  cholesky.solve(x, b);
+  double error = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    error = std::max(error, std::abs(x(i) - (n - i) / (n + 1.)));
+  std::cout << "K x = e_1: largest error against (n + 1 - i)/(n + 1): "
+            << (error < 1e-12 ? "below 1e-12" : std::to_string(error))
+            << std::endl;
+
+  // K x = K y, for y_i = sin(i), with the same factors.
+  TrilinosWrappers::MPI::Vector y(b);
+  for (unsigned int i = 0; i < n; ++i)
+    y(i) = std::sin(i);
+  laplacian.vmult(b, y);
+  cholesky.solve(x, b);
+  x -= y;
+  std::cout << "K x = K y, second solve: |x - y|_inf "
+            << (x.linfty_norm() < 1e-12 ? "below 1e-12" :
+                                          std::to_string(x.linfty_norm()))
+            << std::endl;
+
+  // diag(2, ..., 2, 0.5, 2, ...) with -1 beside it: the pivot of row 10
+  // becomes 0.5 - 10/11 < 0.
+  std::vector<double> diagonal(n, 2.);
+  diagonal[10] = 0.5;
+  TrilinosWrappers::SparseMatrix indefinite;
+  make_tridiagonal(indefinite, n, diagonal);
+  try
+    {
+      cholesky.factorize(indefinite);
+      std::cout << "the indefinite matrix was NOT refused" << std::endl;
+    }
+  catch (const ExceptionBase &e)
+    {
+      std::cout << "indefinite matrix refused: ";
+      e.print_info(std::cout);
+      std::cout << std::endl;
+    }
+}
