@@ -20,8 +20,9 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
            OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
-def run(size, ranks):
-    prm = f"/tmp/vpcontact_bench_{size}_{ranks}.prm"
+def run(size, ranks, solver="CG with AMG"):
+    tag = f"{size}_{ranks}" + ("_cholesky" if solver == "Cholesky" else "")
+    prm = f"/tmp/vpcontact_bench_{tag}.prm"
     with open(prm, "w") as f:
         f.write(open("prm/paper_fig1.prm").read())
         f.write(f"""
@@ -29,8 +30,11 @@ subsection Geometry
   set Subdivisions = {size}, {size}
 end
 subsection Output
-  set Directory          = results/bench_{size}_{ranks}
+  set Directory          = results/bench_{tag}
   set Report solve floor = true
+end
+subsection Solver
+  set Linear solver = {solver}
 end
 """)
     command = ([executable, prm] if ranks == 1 else
@@ -43,14 +47,19 @@ end
     calls = {m.group(1).strip(): int(m.group(2)) for m in matches}
     total = float(re.search(r"Total wallclock time elapsed since start\s+\|\s+"
                             r"([0-9.e+-]+)s", out).group(1))
-    floor = re.search(r"one displacement solve takes ([0-9.e+-]+) s \((\d+) CG"
-                      r" iterations, (\d+) dofs", out)
+    floor = re.search(r"one displacement solve takes ([0-9.e+-]+) s \("
+                      r"(\d+ CG iterations|solve with the factors), "
+                      r"(\d+) dofs", out)
     kernels = re.search(r"one matrix-vector product ([0-9.e+-]+) ms, one "
-                        r"preconditioner application ([0-9.e+-]+) ms", out)
+                        r"(?:preconditioner application|solve with the "
+                        r"factors) ([0-9.e+-]+) ms", out)
     memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
-    return dict(size=size, ranks=ranks, total=total, phases=phases,
+    return dict(size=size, ranks=ranks, solver=solver, total=total,
+                phases=phases,
                 damage_solves=calls.get("Damage solve", 0) / steps,
-                floor=float(floor.group(1)), floor_its=int(floor.group(2)),
+                floor=float(floor.group(1)),
+                floor_its=floor.group(2).split()[0] if "CG" in floor.group(2)
+                else "factors",
                 dofs=int(floor.group(3)),
                 matvec=float(kernels.group(1)), vcycle=float(kernels.group(2)),
                 memory=int(memory.group(1)) / 1024 if memory else float("nan"))
@@ -79,11 +88,19 @@ for size in sizes:
     print(f"{size}^2, 1 rank: {results[-1]['total']:.1f} s", flush=True)
 results.append(run(sizes[-1], 2))
 print(f"{sizes[-1]}^2, 2 ranks: {results[-1]['total']:.1f} s", flush=True)
+# The serial Cholesky factorization (Solver/Linear solver = Cholesky),
+# factorized once per run and reused by every step.
+cholesky = []
+for size in sizes:
+    cholesky.append(run(size, 1, "Cholesky"))
+    print(f"{size}^2, 1 rank, Cholesky: {cholesky[-1]['total']:.1f} s",
+          flush=True)
 bandwidth_one, bandwidth_all = bandwidth()
 
 groups = [("displacement: assembly", ["Assemble right-hand side",
-                                      "Assemble residual", "Assemble matrix",
-                                      "Build preconditioner"]),
+                                      "Assemble residual", "Assemble matrix"]),
+          ("displacement: AMG setup or factorization",
+           ["Build preconditioner"]),
           ("displacement: solve", ["Solve"]),
           ("stress update", ["Stress update"]),
           ("damage: assembly", ["Damage assembly"]),
@@ -96,32 +113,43 @@ Measured by `scripts/bench` (this page is its output) on this machine:
 {platform.processor() or platform.machine()}, {os.cpu_count()} cores,
 Debian 12, deal.II 9.4 release build, Trilinos ML AMG. The scene is
 `prm/paper_fig1.prm` (friction, damage, paper's law, fields written every 10
-steps) with N x N cells and 100 steps. The **floor** is measured at the end
-of the same run: one solve of the displacement system with the matrix and
-AMG as they are and the last right-hand side, from a zero start vector (CG
-iterations in brackets). Times per step are wall-clock milliseconds averaged
-over the 100 steps; setup (mesh, dofs, first assembly and AMG) is in the
-total only.
+steps) with N x N cells and 100 steps, with the default solver of the
+displacement system (CG with AMG) and, in the last rows, with `Solver/Linear
+solver = Cholesky` (SuiteSparse CHOLMOD with OpenBLAS, serial). The
+**floor** is measured at the end of the same run: one solve of the
+displacement system with the matrix and its AMG or factors as they are and
+the last right-hand side, from a zero start vector (CG iterations in
+brackets; for Cholesky one forward and one backward substitution). Times per
+step are wall-clock milliseconds averaged over the 100 steps; the AMG setup
+or the factorization (once per run, since the stick set does not change) is
+in them, spread over the 100 steps; the mesh and dof setup is in the total
+only.
 
-| cells | ranks | dofs | total [s] | per step [ms] | floor [ms] | step / floor | """ +
+| cells | ranks | solver | dofs | total [s] | per step [ms] | floor [ms] | step / floor | """ +
               " | ".join(g for g, _ in groups) + """ | damage solves per step | peak memory rank 0 [MB] |
-|---|---|---|---|---|---|---|""" + "---|" * len(groups) + "---|---|\n")
-    for r in results:
+|---|---|---|---|---|---|---|---|""" + "---|" * len(groups) + "---|---|\n")
+    for r in results + cholesky:
         per_step = 1000 * sum(v for k, v in r["phases"].items()
                               if k not in ("Setup",)) / steps
         cells = [1000 * sum(r["phases"].get(k, 0) for k in keys) / steps
                  for _, keys in groups]
-        out.write(f"| {r['size']}^2 | {r['ranks']} | {r['dofs']} | "
+        solver = "CG + AMG" if r["solver"] == "CG with AMG" else r["solver"]
+        out.write(f"| {r['size']}^2 | {r['ranks']} | {solver} | {r['dofs']} | "
                   f"{r['total']:.1f} | {per_step:.1f} | "
                   f"{1000 * r['floor']:.1f} ({r['floor_its']}) | "
                   f"{per_step / (1000 * r['floor']):.2f} | " +
                   " | ".join(f"{c:.1f}" for c in cells) +
                   f" | {r['damage_solves']:.1f} | {r['memory']:.0f} |\n")
     serial = [r for r in results if r["ranks"] == 1]
-    out.write("\nGrowth of the time per step per 4x dofs: ")
-    out.write(", ".join(
-        f"{a['size']}^2 -> {b['size']}^2: x {((sum(b['phases'].values()) - b['phases'].get('Setup', 0)) / (sum(a['phases'].values()) - a['phases'].get('Setup', 0))):.2f}"
-        for a, b in zip(serial, serial[1:])) + ".\n")
+    def per_step_total(r):
+        return sum(r["phases"].values()) - r["phases"].get("Setup", 0)
+
+    for name, runs in (("CG + AMG", serial), ("Cholesky", cholesky)):
+        out.write(f"\nGrowth of the time per step per 4x dofs, {name}: ")
+        out.write(", ".join(
+            f"{a['size']}^2 -> {b['size']}^2: x "
+            f"{per_step_total(b) / per_step_total(a):.2f}"
+            for a, b in zip(runs, runs[1:])) + ".\n")
     big1 = serial[-1]
     big2 = results[-1]
     out.write(f"\nStrong scaling at {big2['size']}^2: 1 rank {big1['total']:.1f} s, "

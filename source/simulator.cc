@@ -401,11 +401,16 @@ namespace VPContact
     for (unsigned int i = 0; i < 10; ++i)
       linear_solver.precondition(y, rhs);
     preconditioner_timer.stop();
+    const bool cg = linear_solver.method() == LinearSolver::Method::cg_amg;
+    const std::string how
+      = (cg ? std::to_string(iterations) + " CG iterations" :
+              std::string("solve with the factors"));
     pcout << "Solve floor: one displacement solve takes " << timer.wall_time()
-          << " s (" << iterations << " CG iterations, " << dof_handler.n_dofs()
+          << " s (" << how << ", " << dof_handler.n_dofs()
           << " dofs); one matrix-vector product "
-          << 100. * matvec_timer.wall_time()
-          << " ms, one preconditioner application "
+          << 100. * matvec_timer.wall_time() << " ms, "
+          << (cg ? "one preconditioner application " :
+                   "one solve with the factors ")
           << 100. * preconditioner_timer.wall_time() << " ms" << std::endl;
   }
 
