@@ -6,6 +6,8 @@
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace VPContact
 {
@@ -81,6 +83,9 @@ namespace VPContact
     auto *row_index    = static_cast<long *>(lower->i);
     auto *entry        = static_cast<double *>(lower->x);
     long  k            = 0;
+    // Epetra keeps the columns of a row unsorted; CHOLMOD wants them sorted
+    // (lower->sorted = 1). One buffer for all rows.
+    std::vector<std::pair<long, double>> sorted;
     for (long row = 0; row < n; ++row)
       {
         column_start[row] = k;
@@ -96,9 +101,7 @@ namespace VPContact
               entry[k]     = values[j];
               ++k;
             }
-        // Epetra keeps the columns of a row unsorted; CHOLMOD wants them
-        // sorted (lower->sorted = 1).
-        std::vector<std::pair<long, double>> sorted;
+        sorted.clear();
         for (long e = first; e < k; ++e)
           sorted.emplace_back(row_index[e], entry[e]);
         std::sort(sorted.begin(), sorted.end());
