@@ -11,6 +11,61 @@
 
 namespace VPContact
 {
+  namespace
+  {
+    // The lower triangle of the symmetric matrix K by columns, as CHOLMOD
+    // reads it (stype -1). Column j of the lower triangle is row j of the
+    // upper triangle, so the rows of the Epetra matrix are read once, the
+    // entries on and right of the diagonal kept. On one process local and
+    // global column indices coincide. Epetra keeps the columns of a row in
+    // the order of its column map; CHOLMOD wants them sorted.
+    cholmod_sparse *
+    lower_triangle(const Epetra_CrsMatrix &epetra, cholmod_common &common)
+    {
+      const long                           n = epetra.NumMyRows();
+      std::vector<long>                    column_start(n + 1, 0);
+      std::vector<std::pair<long, double>> entries;
+      for (long row = 0; row < n; ++row)
+        {
+          int     length;
+          double *values;
+          int    *columns;
+          epetra.ExtractMyRowView(row, length, values, columns);
+          const auto first = entries.size();
+          for (int j = 0; j < length; ++j)
+            if (epetra.GCID(columns[j]) >= row)
+              entries.emplace_back(epetra.GCID(columns[j]), values[j]);
+          std::sort(entries.begin() + first, entries.end());
+          column_start[row + 1] = entries.size();
+        }
+
+      cholmod_sparse *lower = cholmod_l_allocate_sparse(n,
+                                                        n,
+                                                        entries.size(),
+                                                        1,
+                                                        1,
+                                                        -1,
+                                                        CHOLMOD_REAL,
+                                                        &common);
+      AssertThrow(lower != nullptr,
+                  ExcMessage("CHOLMOD could not allocate the matrix ("
+                             + std::to_string(entries.size()) + " entries)."));
+      std::copy(column_start.begin(),
+                column_start.end(),
+                static_cast<long *>(lower->p));
+      auto *row_index = static_cast<long *>(lower->i);
+      auto *entry     = static_cast<double *>(lower->x);
+      for (std::size_t e = 0; e < entries.size(); ++e)
+        {
+          row_index[e] = entries[e].first;
+          entry[e]     = entries[e].second;
+        }
+      return lower;
+    }
+  } // namespace
+
+
+
   SparseCholesky::SparseCholesky()
   {
     cholmod_l_start(&common);
@@ -60,60 +115,8 @@ namespace VPContact
                            "mpirun choose Solver/Linear solver = MUMPS or "
                            "CG with AMG."));
 
-    // The rows of the upper triangle of K are the columns of its lower
-    // triangle; CHOLMOD reads a symmetric matrix from either (stype -1:
-    // lower triangle, by columns). On one process local and global column
-    // indices coincide.
-    long nnz = 0;
-    for (long row = 0; row < n; ++row)
-      {
-        int     length;
-        double *values;
-        int    *columns;
-        epetra.ExtractMyRowView(row, length, values, columns);
-        for (int j = 0; j < length; ++j)
-          nnz += (epetra.GCID(columns[j]) >= row);
-      }
-    cholmod_sparse *lower
-      = cholmod_l_allocate_sparse(n, n, nnz, 1, 1, -1, CHOLMOD_REAL, &common);
-    AssertThrow(lower != nullptr,
-                ExcMessage("CHOLMOD could not allocate the matrix ("
-                           + std::to_string(nnz) + " entries)."));
-    auto *column_start = static_cast<long *>(lower->p);
-    auto *row_index    = static_cast<long *>(lower->i);
-    auto *entry        = static_cast<double *>(lower->x);
-    long  k            = 0;
-    // Epetra keeps the columns of a row unsorted; CHOLMOD wants them sorted
-    // (lower->sorted = 1). One buffer for all rows.
-    std::vector<std::pair<long, double>> sorted;
-    for (long row = 0; row < n; ++row)
-      {
-        column_start[row] = k;
-        int     length;
-        double *values;
-        int    *columns;
-        epetra.ExtractMyRowView(row, length, values, columns);
-        const long first = k;
-        for (int j = 0; j < length; ++j)
-          if (epetra.GCID(columns[j]) >= row)
-            {
-              row_index[k] = epetra.GCID(columns[j]);
-              entry[k]     = values[j];
-              ++k;
-            }
-        sorted.clear();
-        for (long e = first; e < k; ++e)
-          sorted.emplace_back(row_index[e], entry[e]);
-        std::sort(sorted.begin(), sorted.end());
-        for (long e = first; e < k; ++e)
-          {
-            row_index[e] = sorted[e - first].first;
-            entry[e]     = sorted[e - first].second;
-          }
-      }
-    column_start[n] = k;
-
-    factor = cholmod_l_analyze(lower, &common);
+    cholmod_sparse *lower = lower_triangle(epetra, common);
+    factor                = cholmod_l_analyze(lower, &common);
     if (factor != nullptr)
       cholmod_l_factorize(lower, factor, &common);
     const int  status   = common.status;
@@ -141,6 +144,9 @@ namespace VPContact
                              "memory."));
 
     rhs = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &common);
+    AssertThrow(rhs != nullptr,
+                ExcMessage("CHOLMOD could not allocate a vector of size "
+                           + std::to_string(n) + "."));
   }
 
 

@@ -17,12 +17,11 @@ namespace VPContact
    * computed once by factorize() and applied by solve() as often as
    * needed.
    *
-   * CHOLMOD orders the unknowns to reduce fill (AMD or METIS, whichever
-   * fills less) and factorizes by supernodes, so most of its work is dense
-   * matrix products. A solve is two triangular sweeps, without the
-   * iterative refinement that UMFPACK does by default, so it costs about
-   * two passes over the factor. Only the upper triangle of K is read; K
-   * must be symmetric, which the displacement matrix is.
+   * CHOLMOD orders the unknowns to reduce fill (AMD, and METIS or nested
+   * dissection only when AMD fills too much) and factorizes by supernodes,
+   * so most of its work is dense matrix products (BLAS). A solve is a
+   * forward and a backward triangular sweep. Only the upper triangle of K
+   * is read; K must be symmetric, which the displacement matrix is.
    */
   class SparseCholesky
   {
@@ -46,7 +45,8 @@ namespace VPContact
     solve(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src) const;
 
-    /// Number of nonzeros of the factor L (for the run's report).
+    /// Number of nonzeros of the factor L: the fill that the ordering
+    /// left (0 before the first factorize()).
     double
     factor_nonzeros() const;
 
