@@ -51,6 +51,7 @@ namespace VPContact
     InitialConditions::declare_parameters(prm);
     TimeDiscretization::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
+    DamageSystem<dim>::declare_parameters(prm);
     IncrementPredictor::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
@@ -90,6 +91,7 @@ namespace VPContact
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
+    damage_system.parse_parameters(prm);
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());

@@ -143,8 +143,8 @@ namespace VPContact
     interpolate_initial_damage();
 
     // K = M_L/k + kappa A does not change while the mesh and k do: it is
-    // assembled and its AMG built once. The bounds are applied by masking
-    // (see DamageSystem::solve()), not by reassembly.
+    // assembled and its preconditioner built once. The bounds are applied by
+    // masking (see DamageSystem::solve()), not by reassembly.
     assemble_damage(true);
     damage_system.initialize_preconditioner();
   }

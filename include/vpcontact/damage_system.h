@@ -1,10 +1,12 @@
 // The linear algebra of the damage obstacle problem on the damage degrees of
 // freedom alone: their compact numbering inside the FESystem, the matrix
-// M_L/k + kappa A with its AMG, and the CG solve with nodes held at bounds.
+// M_L/k + kappa A with its preconditioner, and the CG solve with nodes held
+// at bounds.
 #ifndef vpcontact_damage_system_h
 #define vpcontact_damage_system_h
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -33,16 +35,32 @@ namespace VPContact
    * FESystem.
    *
    * "Compact" below means an index or vector of this numbering.
+   *
+   * The preconditioner of the CG solves is the entry "Damage
+   * preconditioner" of section "Solver" (declared here, since this class
+   * is its only user).
    */
   template <int dim>
   class DamageSystem
   {
   public:
+    enum class Preconditioner
+    {
+      incomplete_cholesky,
+      amg
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
     /**
      * Number the damage degrees of freedom (component @p component of the
      * FESystem of @p dof_handler) and build the hanging node constraints
-     * and the sparsity pattern of the compact system. Releases the AMG of
-     * an earlier mesh first.
+     * and the sparsity pattern of the compact system. Releases the
+     * preconditioner of an earlier mesh first.
      */
     void
     reinit(const DoFHandler<dim> &dof_handler,
@@ -101,7 +119,7 @@ namespace VPContact
     TrilinosWrappers::SparseMatrix &
     matrix();
 
-    /// Build the AMG of the assembled matrix (after assembly).
+    /// Build the preconditioner of the assembled matrix (after assembly).
     void
     initialize_preconditioner();
 
@@ -109,11 +127,11 @@ namespace VPContact
      * Solve K_FF x_F = b_F on the free nodes, x = 0 on the nodes listed in
      * @p held (local positions, see local_position()): CG on
      * P K P + (I - P), P zeroing the held entries, preconditioned alike by
-     * P AMG(K) P + (I - P), so that neither the matrix nor the AMG is
-     * rebuilt when the held set changes. @p b must be zero on the held
-     * nodes; @p x is the start vector. Stops at a residual of @p tolerance
-     * times |b|; throws a message naming the Solver parameters otherwise.
-     * Returns the number of CG iterations.
+     * P C P + (I - P) for the preconditioner C of K, so that neither the
+     * matrix nor C is rebuilt when the held set changes. @p b and @p x
+     * must be zero on the held nodes (@p x is the start vector). Stops at a
+     * residual of @p tolerance times |b|; throws a message naming the
+     * Solver parameters otherwise. Returns the number of CG iterations.
      */
     unsigned int
     solve(const TrilinosWrappers::MPI::Vector &b,
@@ -153,9 +171,9 @@ namespace VPContact
     AffineConstraints<double>            constraints;
     std::vector<unsigned int>            hanging_positions;
 
-    TrilinosWrappers::SparseMatrix                     system_matrix;
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-    mutable TrilinosWrappers::MPI::Vector              masked;
+    Preconditioner preconditioner_kind = Preconditioner::incomplete_cholesky;
+    TrilinosWrappers::SparseMatrix                      system_matrix;
+    std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
   };
 } // namespace VPContact
 
