@@ -545,19 +545,35 @@ namespace VPContact
     const auto [lowest, highest] = damage_range(damage_owned);
     const double violation       = std::max({0., -lowest, highest - 1.});
 
-    FEValues<dim> fe_values(fe, quadrature, update_values | update_JxW_values);
-    const FEValuesExtractors::Scalar zeta(dim);
-    std::vector<double>              values(quadrature.size());
-    double                           damaged = 0, volume = 0;
+    // zeta at the quadrature points from its nodal values (the ghosted
+    // compact vector damage) and the shape values on the reference cell,
+    // which are those of every cell: only JxW needs the cell, and an
+    // FEValues that computes nothing else does not copy the FESystem's
+    // shape functions on every cell (measured at 256^2 cells, 50 steps:
+    // 1.33-1.76 s with zeta from FEValues, 0.53 s this way).
+    FEValues<dim>      fe_values(fe, quadrature, update_JxW_values);
+    const auto        &shape = damage_system.shape_functions();
+    FullMatrix<double> psi(quadrature.size(), shape.size());
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      for (unsigned int a = 0; a < shape.size(); ++a)
+        psi(q, a) = fe.shape_value(shape[a], quadrature.point(q));
+    std::vector<types::global_dof_index> dof_indices;
+    std::vector<double>                  nodal(shape.size());
+    double                               damaged = 0, volume = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[zeta].get_function_values(solution, values);
+          damage_system.dof_indices(cell, dof_indices);
+          for (unsigned int a = 0; a < shape.size(); ++a)
+            nodal[a] = damage(dof_indices[a]);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
+              double value = 0;
+              for (unsigned int a = 0; a < shape.size(); ++a)
+                value += psi(q, a) * nodal[a];
               volume += fe_values.JxW(q);
-              if (values[q] < 1. - 1e-12)
+              if (value < 1. - 1e-12)
                 damaged += fe_values.JxW(q);
             }
         }
