@@ -29,7 +29,7 @@ namespace VPContact
    * every matrix-vector product and every AMG level as held (identity)
    * rows. This class numbers the damage degrees of freedom contiguously
    * instead (rank by rank, in the order of the FESystem's numbering) and
-   * keeps the damage problem there: a scalar matrix, a scalar AMG, and
+   * keeps the damage problem there: a scalar matrix, its preconditioner, and
    * vectors a third of the size. gather() and scatter() move the damage
    * entries between the two numberings; the solution itself stays in the
    * FESystem.

@@ -1,0 +1,154 @@
+// Unit test: DamageSystem::solve() with nodes held at their bound. On a
+// distributed 12 x 12 mesh of the unit square with the FESystem of a damage
+// scene (Q1^2 x Q1), K = M_L/k + kappa A is assembled in the compact damage
+// numbering, a vector x* is chosen that is zero on the held nodes (those with
+// x < 0.4) and smooth elsewhere, and b = (K x*) on the free nodes, 0 on the
+// held ones. The masked CG must return x* (K_FF x_F = b_F has the unique
+// solution x*_F), with the held entries exactly zero, for both preconditioners
+// (incomplete Cholesky and AMG), from a zero start vector and from x* itself.
+// The same on 2 ranks.
+#include <vpcontact/damage_system.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <cmath>
+#include <iostream>
+
+using namespace VPContact;
+
+namespace
+{
+  // M_L/k + kappa A on the damage shape functions of each cell, with k =
+  // 0.01 and kappa = 0.01 as in the paper scene.
+  void
+  assemble(const DoFHandler<2> &dof_handler, DamageSystem<2> &system)
+  {
+    const double       k = 0.01, kappa = 0.01;
+    const QGauss<2>    quadrature(2);
+    FEValues<2>        fe_values(dof_handler.get_fe(),
+                          quadrature,
+                          update_gradients | update_JxW_values);
+    const auto        &shape = system.shape_functions();
+    FullMatrix<double> cell_matrix(shape.size(), shape.size());
+    std::vector<types::global_dof_index> indices;
+    system.matrix() = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          system.dof_indices(cell, indices);
+          for (unsigned int a = 0; a < shape.size(); ++a)
+            for (unsigned int b = 0; b < shape.size(); ++b)
+              {
+                double entry = (a == b ? cell->measure() / 4. / k : 0.);
+                for (const unsigned int q :
+                     fe_values.quadrature_point_indices())
+                  entry += kappa * fe_values.shape_grad(shape[a], q)
+                           * fe_values.shape_grad(shape[b], q)
+                           * fe_values.JxW(q);
+                cell_matrix(a, b) = entry;
+              }
+          system.hanging_node_constraints()
+            .distribute_local_to_global(cell_matrix, indices, system.matrix());
+        }
+    system.matrix().compress(VectorOperation::add);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+
+  parallel::distributed::Triangulation<2> triangulation(comm);
+  GridGenerator::subdivided_hyper_cube(triangulation, 12);
+  const FESystem<2> fe(FE_Q<2>(1), 2, FE_Q<2>(1), 1);
+  DoFHandler<2>     dof_handler(triangulation);
+  dof_handler.distribute_dofs(fe);
+  IndexSet relevant;
+  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+
+  for (const std::string preconditioner : {"incomplete Cholesky", "AMG"})
+    {
+      ParameterHandler prm;
+      DamageSystem<2>::declare_parameters(prm);
+      prm.enter_subsection("Solver");
+      prm.set("Damage preconditioner", preconditioner);
+      prm.leave_subsection();
+      DamageSystem<2> system;
+      system.parse_parameters(prm);
+      system.reinit(dof_handler,
+                    2,
+                    dof_handler.locally_owned_dofs(),
+                    relevant,
+                    comm);
+      assemble(dof_handler, system);
+      system.initialize_preconditioner();
+
+      // x*: 0 where x < 0.4 (held), smooth and nonzero elsewhere.
+      TrilinosWrappers::MPI::Vector        exact(system.owned(), comm);
+      std::vector<unsigned int>            held;
+      std::vector<types::global_dof_index> indices;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            system.dof_indices(cell, indices);
+            for (unsigned int v = 0; v < indices.size(); ++v)
+              if (system.owned().is_element(indices[v]))
+                {
+                  const Point<2> p = cell->vertex(v);
+                  exact(indices[v])
+                    = (p[0] < 0.4 ?
+                         0. :
+                         1. + std::sin(3. * p[0]) * std::cos(2. * p[1]));
+                }
+          }
+      for (const auto i : system.owned())
+        if (exact(i) == 0.)
+          held.push_back(system.local_position(i));
+
+      TrilinosWrappers::MPI::Vector b(exact), x(exact);
+      system.matrix().vmult(b, exact);
+      for (const auto i : held)
+        b.begin()[i] = 0.;
+
+      const unsigned int n_held
+        = Utilities::MPI::sum(static_cast<unsigned int>(held.size()), comm);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        std::cout << preconditioner << ": " << system.owned().size()
+                  << " damage dofs, " << n_held << " held" << std::endl;
+      for (const bool from_exact : {false, true})
+        {
+          if (!from_exact)
+            x = 0.;
+          else
+            x = exact;
+          const unsigned int iterations = system.solve(b, x, held, 1e-12, 1000);
+          double             held_max   = 0;
+          for (const auto i : held)
+            held_max = std::max(held_max, std::abs(x.begin()[i]));
+          held_max = Utilities::MPI::max(held_max, comm);
+          TrilinosWrappers::MPI::Vector error(x);
+          error -= exact;
+          const double relative = error.linfty_norm() / exact.linfty_norm();
+          if (Utilities::MPI::this_mpi_process(comm) == 0)
+            std::cout << "  start " << (from_exact ? "x*" : "0 ")
+                      << ": |x - x*|/|x*| below 1e-9: "
+                      << (relative < 1e-9 ? "yes" : "no")
+                      << ", held entries exactly 0: "
+                      << (held_max == 0. ? "yes" : "no") << ", CG iterations "
+                      << (from_exact ? (iterations == 0 ? "0" : "more than 0") :
+                                       (iterations > 0 ? "more than 0" : "0"))
+                      << std::endl;
+        }
+    }
+}
