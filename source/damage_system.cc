@@ -30,9 +30,10 @@ namespace VPContact
         "and one backward sweep per iteration; a few more iterations than "
         "AMG, each much cheaper, since a step's start vectors are close to "
         "the solution (measured at 512^2 cells: 4 ms against 19 ms per "
-        "application). 'AMG': Trilinos ML, whose iteration count does not "
-        "grow with the mesh; for meshes far finer than 512^2 cells, or "
-        "where kappa k / h^2 is large.");
+        "application). 'AMG': Trilinos ML, whose iteration count grows "
+        "less with the mesh (paper scene: 6.6 and 8.7 per solve at 256^2 "
+        "and 512^2 cells, against 8.5 and 13.9); for meshes far finer "
+        "than 512^2 cells, or where kappa k / h^2 is large.");
     }
     prm.leave_subsection();
   }
@@ -357,8 +358,8 @@ namespace VPContact
     // residual, the search direction and the iterate, exactly, since
     // their held entries only ever get sums of zeros. So P x = x, the
     // operator is A x with the held entries of the result set to 0, and
-    // no masked copy of x is needed (measured at 256^2 cells: 19 % of the
-    // damage solve time went to the copies).
+    // no masked copy of x is needed (measured at 256^2 cells: the copies
+    // took 18 % of the damage CG time).
     struct Masked
     {
       std::function<void(TrilinosWrappers::MPI::Vector &,
