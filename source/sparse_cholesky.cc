@@ -33,8 +33,11 @@ namespace VPContact
           epetra.ExtractMyRowView(row, length, values, columns);
           const auto first = entries.size();
           for (int j = 0; j < length; ++j)
-            if (epetra.GCID(columns[j]) >= row)
-              entries.emplace_back(epetra.GCID(columns[j]), values[j]);
+            {
+              const long column = epetra.GCID(columns[j]);
+              if (column >= row)
+                entries.emplace_back(column, values[j]);
+            }
           std::sort(entries.begin() + first, entries.end());
           column_start[row + 1] = entries.size();
         }
