@@ -38,6 +38,21 @@ namespace VPContact
         for (unsigned int j = i + 1; j < n; ++j)
           cell_matrix(i, j) = cell_matrix(j, i);
     }
+
+
+
+    // The shape functions of @p fe that belong to the displacement (the
+    // others, the damage's, have no strain).
+    template <int dim>
+    std::vector<unsigned int>
+    displacement_shape_functions(const FiniteElement<dim> &fe)
+    {
+      std::vector<unsigned int> shape;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        if (fe.system_to_component_index(i).first < dim)
+          shape.push_back(i);
+      return shape;
+    }
   } // namespace
 
 
@@ -85,25 +100,30 @@ namespace VPContact
   {
     // (f_B(t), phi_i) + (f_N(t), phi_i)_{Gamma_N}, at the time last given to
     // boundary_conditions.set_time(); fe_values is reinitialized on cell.
+    // The load vectors are allocated only where there is a load: this runs
+    // on every cell of every step, and most cells have none.
     const FEValuesExtractors::Vector u(0);
-    Vector<double>                   load(dim);
     Tensor<1, dim>                   load_tensor;
     if (boundary_conditions.has_body_force())
-      for (const unsigned int q : fe_values.quadrature_point_indices())
-        {
-          boundary_conditions.body_force()
-            .vector_value(fe_values.quadrature_point(q), load);
-          for (unsigned int d = 0; d < dim; ++d)
-            load_tensor[d] = load[d];
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-            cell_vector(i)
-              += load_tensor * fe_values[u].value(i, q) * fe_values.JxW(q);
-        }
+      {
+        Vector<double> load(dim);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            boundary_conditions.body_force()
+              .vector_value(fe_values.quadrature_point(q), load);
+            for (unsigned int d = 0; d < dim; ++d)
+              load_tensor[d] = load[d];
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              cell_vector(i)
+                += load_tensor * fe_values[u].value(i, q) * fe_values.JxW(q);
+          }
+      }
     for (const auto &face : cell->face_iterators())
       if (face->at_boundary()
           && boundary_conditions.is_traction_boundary(face->boundary_id()))
         {
           fe_face_values.reinit(cell, face);
+          Vector<double> load(dim);
           for (const unsigned int q : fe_face_values.quadrature_point_indices())
             {
               boundary_conditions.traction()
@@ -147,7 +167,15 @@ namespace VPContact
     FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
+    std::vector<double>                  local_solution(dofs_per_cell);
+    const std::vector<unsigned int>      displacement_shape
+      = displacement_shape_functions(fe);
 
+    // Why the nodal values are read once per cell and the loop over i runs
+    // over the displacement shape functions only: this pass visits every
+    // cell in every step, and reading a ghosted Trilinos vector costs an
+    // index lookup per entry (get_function_values() and its siblings read
+    // the cell's entries again for each call, into a fresh heap vector).
     rhs = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -155,9 +183,19 @@ namespace VPContact
           cell_rhs = 0.;
           fe_values.reinit(cell);
           if (evaluate_rate || with_damage)
-            fe_values[u].get_function_symmetric_gradients(solution, strains);
+            {
+              cell->get_dof_values(solution,
+                                   local_solution.begin(),
+                                   local_solution.end());
+              fe_values[u]
+                .get_function_symmetric_gradients_from_local_dof_values(
+                  local_solution,
+                  strains);
+            }
           if (with_damage)
-            fe_values[zeta].get_function_values(solution, damage_values);
+            fe_values[zeta].get_function_values_from_local_dof_values(
+              local_solution,
+              damage_values);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
@@ -175,10 +213,11 @@ namespace VPContact
                                                 damage_values[q],
                                                 fe_values.quadrature_point(q),
                                                 time - k);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_rhs(i) -= point.predictor
-                               * fe_values[u].symmetric_gradient(i, q)
-                               * fe_values.JxW(q);
+              const SymmetricTensor<2, dim> weighted_predictor
+                = point.predictor * fe_values.JxW(q);
+              for (const unsigned int i : displacement_shape)
+                cell_rhs(i)
+                  -= weighted_predictor * fe_values[u].symmetric_gradient(i, q);
             }
           add_cell_loads(cell, fe_values, fe_face_values, cell_rhs);
 

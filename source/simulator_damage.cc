@@ -52,35 +52,63 @@ namespace VPContact
 
 
 
+    // The values psi(q, a) of the damage shape functions @p shape of @p fe
+    // at the points of @p quadrature on the reference cell. They are those
+    // of every cell (the values of a Q1 function do not depend on the
+    // mapping), so the passes over the cells in every step need from
+    // FEValues only JxW: an FEValues that computes nothing else does not
+    // copy the FESystem's shape functions on every cell (measured at 256^2
+    // cells, 50 steps: the statistics took 1.33-1.76 s with zeta from
+    // FEValues, 0.53 s this way).
+    template <int dim>
+    FullMatrix<double>
+    reference_shape_values(const FiniteElement<dim>        &fe,
+                           const std::vector<unsigned int> &shape,
+                           const Quadrature<dim>           &quadrature)
+    {
+      FullMatrix<double> psi(quadrature.size(), shape.size());
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        for (unsigned int a = 0; a < shape.size(); ++a)
+          psi(q, a) = fe.shape_value(shape[a], quadrature.point(q));
+      return psi;
+    }
+
+
+
     // The element load M_L zeta_{n-1}/k + (phi_{n-1}, psi) of one cell:
     // zeta_{n-1} from its nodal values @p old_nodal, the source stored at
-    // the Gauss points by the assembly of the displacement step.
+    // the Gauss points by the assembly of the displacement step; the shape
+    // values from reference_shape_values() at the Gauss-Lobatto points
+    // (@p psi_lobatto) and the Gauss points (@p psi_gauss), and the JxW of
+    // the cell at both from @p lobatto_values and @p fe_values.
     template <int dim>
     void
     damage_cell_load(
       const FEValues<dim>                                &fe_values,
       const FEValues<dim>                                &lobatto_values,
-      const std::vector<unsigned int>                    &shape,
+      const FullMatrix<double>                           &psi_gauss,
+      const FullMatrix<double>                           &psi_lobatto,
       const std::vector<double>                          &old_nodal,
       const ArrayView<const QuadraturePointHistory<dim>> &history,
       const double                                        k,
       Vector<double>                                     &cell_rhs)
     {
+      const unsigned int n_shape = old_nodal.size();
       for (const unsigned int q : lobatto_values.quadrature_point_indices())
         {
           double old_damage = 0;
-          for (unsigned int b = 0; b < shape.size(); ++b)
-            old_damage
-              += lobatto_values.shape_value(shape[b], q) * old_nodal[b];
-          for (unsigned int a = 0; a < shape.size(); ++a)
-            cell_rhs(a) += lobatto_values.shape_value(shape[a], q) * old_damage
-                           / k * lobatto_values.JxW(q);
+          for (unsigned int b = 0; b < n_shape; ++b)
+            old_damage += psi_lobatto(q, b) * old_nodal[b];
+          const double weight = old_damage / k * lobatto_values.JxW(q);
+          for (unsigned int a = 0; a < n_shape; ++a)
+            cell_rhs(a) += psi_lobatto(q, a) * weight;
         }
       for (const unsigned int q : fe_values.quadrature_point_indices())
-        for (unsigned int a = 0; a < shape.size(); ++a)
-          cell_rhs(a) += history[q].damage_source
-                         * fe_values.shape_value(shape[a], q)
-                         * fe_values.JxW(q);
+        {
+          const double weight = history[q].damage_source * fe_values.JxW(q);
+          for (unsigned int a = 0; a < n_shape; ++a)
+            cell_rhs(a) += psi_gauss(q, a) * weight;
+        }
     }
   } // namespace
 
@@ -270,13 +298,18 @@ namespace VPContact
     const QGaussLobatto<dim> lobatto(2);
     FEValues<dim>            fe_values(fe,
                             quadrature,
-                            (matrix ? update_gradients : update_values)
+                            (matrix ? update_gradients : update_default)
                               | update_JxW_values);
     FEValues<dim>            lobatto_values(fe,
                                  lobatto,
-                                 update_values | update_JxW_values);
-    FullMatrix<double>       cell_matrix(shape.size(), shape.size());
-    Vector<double>           cell_rhs(shape.size());
+                                 (matrix ? update_values : update_default)
+                                   | update_JxW_values);
+    const FullMatrix<double> psi_gauss
+      = reference_shape_values(fe, shape, quadrature);
+    const FullMatrix<double> psi_lobatto
+      = reference_shape_values(fe, shape, lobatto);
+    FullMatrix<double> cell_matrix(shape.size(), shape.size());
+    Vector<double>     cell_rhs(shape.size());
     std::vector<types::global_dof_index> dof_indices;
     std::vector<double>                  old_nodal(shape.size());
 
@@ -309,7 +342,8 @@ namespace VPContact
               cell_rhs = 0.;
               damage_cell_load(fe_values,
                                lobatto_values,
-                               shape,
+                               psi_gauss,
+                               psi_lobatto,
                                old_nodal,
                                std::as_const(stress_history).get_data(cell),
                                k,
@@ -546,17 +580,12 @@ namespace VPContact
     const double violation       = std::max({0., -lowest, highest - 1.});
 
     // zeta at the quadrature points from its nodal values (the ghosted
-    // compact vector damage) and the shape values on the reference cell,
-    // which are those of every cell: only JxW needs the cell, and an
-    // FEValues that computes nothing else does not copy the FESystem's
-    // shape functions on every cell (measured at 256^2 cells, 50 steps:
-    // 1.33-1.76 s with zeta from FEValues, 0.53 s this way).
-    FEValues<dim>      fe_values(fe, quadrature, update_JxW_values);
-    const auto        &shape = damage_system.shape_functions();
-    FullMatrix<double> psi(quadrature.size(), shape.size());
-    for (const unsigned int q : fe_values.quadrature_point_indices())
-      for (unsigned int a = 0; a < shape.size(); ++a)
-        psi(q, a) = fe.shape_value(shape[a], quadrature.point(q));
+    // compact vector damage) and the shape values on the reference cell
+    // (see reference_shape_values()).
+    FEValues<dim>            fe_values(fe, quadrature, update_JxW_values);
+    const auto              &shape = damage_system.shape_functions();
+    const FullMatrix<double> psi
+      = reference_shape_values(fe, shape, quadrature);
     std::vector<types::global_dof_index> dof_indices;
     std::vector<double>                  nodal(shape.size());
     double                               damaged = 0, volume = 0;

@@ -26,6 +26,8 @@ namespace VPContact
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<double>                  damage_values(quadrature.size(), 1.);
+    std::vector<double>                  local_increment(fe.n_dofs_per_cell());
+    std::vector<double>                  local_solution(fe.n_dofs_per_cell());
     // Backward Euler solves for the stress again from sigma_{n-1}, with the
     // strain of u_n and the damage zeta_{n-1} (still in the solution).
     const bool implicit = viscoplasticity.implicit() && n > 0;
@@ -37,12 +39,27 @@ namespace VPContact
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values[u].get_function_symmetric_gradients(increment,
-                                                        strain_increments);
+          // The nodal values are read once per vector (see assemble_rhs()).
+          cell->get_dof_values(increment,
+                               local_increment.begin(),
+                               local_increment.end());
+          fe_values[u].get_function_symmetric_gradients_from_local_dof_values(
+            local_increment,
+            strain_increments);
           if (implicit)
-            fe_values[u].get_function_symmetric_gradients(solution, strains);
-          if (implicit && damage_model.is_active())
-            fe_values[zeta].get_function_values(solution, damage_values);
+            {
+              cell->get_dof_values(solution,
+                                   local_solution.begin(),
+                                   local_solution.end());
+              fe_values[u]
+                .get_function_symmetric_gradients_from_local_dof_values(
+                  local_solution,
+                  strains);
+              if (damage_model.is_active())
+                fe_values[zeta].get_function_values_from_local_dof_values(
+                  local_solution,
+                  damage_values);
+            }
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
