@@ -35,15 +35,28 @@ namespace VPContact
                       const TrilinosWrappers::MPI::Vector &lumped_mass,
                       const MPI_Comm                       mpi_communicator)
   {
+    // Where each node sits in the local storage of a ghosted vector laid
+    // out like @p lumped_mass, and of an owned one: update() and
+    // held_changes() run after every damage solve over all nodes, and a
+    // Trilinos vector read by global index costs a hash lookup per entry
+    // (measured at 512^2 cells: 18 ms per solve outside CG before).
     communicator = mpi_communicator;
     dofs.clear();
     mass.clear();
     owned.clear();
+    ghosted_position.clear();
+    owned_position.clear();
+    const Epetra_BlockMap &ghosted_map = lumped_mass.trilinos_vector().Map();
+    n_ghosted                          = ghosted_map.NumMyElements();
     for (const auto dof : damage_dofs)
       {
         dofs.push_back(dof);
         mass.push_back(lumped_mass(dof));
         owned.push_back(locally_owned_dofs.is_element(dof));
+        ghosted_position.push_back(
+          ghosted_map.LID(static_cast<TrilinosWrappers::types::int_type>(dof)));
+        owned_position.push_back(
+          owned.back() ? locally_owned_dofs.index_within_set(dof) : 0);
       }
     status.assign(dofs.size(), BoundStatus::free);
     upper_at_start.assign(dofs.size(), false);
@@ -52,16 +65,17 @@ namespace VPContact
 
 
 
-  std::vector<std::pair<types::global_dof_index, double>>
+  std::vector<std::pair<unsigned int, double>>
   DamageBounds::held_changes(
     const TrilinosWrappers::MPI::Vector &old_damage) const
   {
-    std::vector<std::pair<types::global_dof_index, double>> held;
+    const double *old_values = old_damage.begin();
+    std::vector<std::pair<unsigned int, double>> held;
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (owned[i] && status[i] != BoundStatus::free)
-        held.emplace_back(dofs[i],
+        held.emplace_back(owned_position[i],
                           (status[i] == BoundStatus::upper ? 1. : 0.)
-                            - old_damage(dofs[i]));
+                            - old_values[owned_position[i]]);
     return held;
   }
 
@@ -72,14 +86,22 @@ namespace VPContact
                        const TrilinosWrappers::MPI::Vector &damage,
                        const double                         time_step)
   {
-    unsigned int n_changed = 0;
+    AssertThrow(residual.trilinos_vector().Map().NumMyElements() == n_ghosted
+                  && damage.trilinos_vector().Map().NumMyElements()
+                       == n_ghosted,
+                ExcInternalError("DamageBounds::update() needs ghosted "
+                                 "vectors laid out like the lumped mass."));
+    const double *residual_values = residual.begin();
+    const double *damage_values   = damage.begin();
+    unsigned int  n_changed       = 0;
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
         // Weakly active nodes: a hysteresis of 1e-9 in units of zeta.
         constexpr double  hysteresis = 1e-9;
         const double      c          = mass[i] / time_step;
-        const BoundStatus next       = box_decision(residual(dofs[i]),
-                                              damage(dofs[i]),
+        const unsigned    position   = ghosted_position[i];
+        const BoundStatus next       = box_decision(residual_values[position],
+                                              damage_values[position],
                                               c,
                                               status[i],
                                               hysteresis * c);

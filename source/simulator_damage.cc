@@ -497,10 +497,11 @@ namespace VPContact
     std::vector<unsigned int>     held = damage_system.hanging_node_positions();
     TrilinosWrappers::MPI::Vector bound_change(damage_old);
     bound_change = 0.;
-    for (const auto &[dof, change] : damage_bounds.held_changes(damage_old))
+    for (const auto &[position, change] :
+         damage_bounds.held_changes(damage_old))
       {
-        held.push_back(damage_system.local_position(dof));
-        bound_change.begin()[held.back()] = change;
+        held.push_back(position);
+        bound_change.begin()[position] = change;
       }
 
     // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +

@@ -67,15 +67,17 @@ namespace VPContact
 
     /**
      * The owned nodes of the active sets with the change of the damage that
-     * puts them on their bound: (index, 1 - zeta_old) on the upper set,
-     * (index, -zeta_old) on the lower one, zeta_old read from
-     * @p old_damage (owned entries suffice).
+     * puts them on their bound: (position, 1 - zeta_old) on the upper set,
+     * (position, -zeta_old) on the lower one, zeta_old read from
+     * @p old_damage, a vector of the owned entries. The position is that of
+     * the node among the owned entries.
      */
-    std::vector<std::pair<types::global_dof_index, double>>
+    std::vector<std::pair<unsigned int, double>>
     held_changes(const TrilinosWrappers::MPI::Vector &old_damage) const;
 
     /**
-     * The next sets from the ghosted @p residual and @p damage, with
+     * The next sets from the ghosted @p residual and @p damage (laid out
+     * like the lumped mass given to setup()), with
      * c = m_i / k (the diagonal of M/k) and the hysteresis tolerance
      * 1e-9 c (a change of the damage of 1e-9, far below anything the
      * model resolves). Returns the number of nodes that changed set, on all
@@ -135,9 +137,15 @@ namespace VPContact
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  mass;
     std::vector<bool>                    owned;
-    std::vector<BoundStatus>             status;
-    std::vector<bool>                    upper_at_start;
-    unsigned int                         front_size = 0;
+    /// Positions of the nodes in the local storage of a ghosted vector laid
+    /// out like the lumped mass (n_ghosted entries), and among the owned
+    /// entries (owned nodes only).
+    std::vector<unsigned int> ghosted_position;
+    std::vector<unsigned int> owned_position;
+    int                       n_ghosted = 0;
+    std::vector<BoundStatus>  status;
+    std::vector<bool>         upper_at_start;
+    unsigned int              front_size = 0;
 
     /// The owned upper nodes with a neighbour below 1 (one matrix-vector
     /// product with @p matrix).
