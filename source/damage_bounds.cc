@@ -97,10 +97,10 @@ namespace VPContact
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
         // Weakly active nodes: a hysteresis of 1e-9 in units of zeta.
-        constexpr double  hysteresis = 1e-9;
-        const double      c          = mass[i] / time_step;
-        const unsigned    position   = ghosted_position[i];
-        const BoundStatus next       = box_decision(residual_values[position],
+        constexpr double   hysteresis = 1e-9;
+        const double       c          = mass[i] / time_step;
+        const unsigned int position   = ghosted_position[i];
+        const BoundStatus  next       = box_decision(residual_values[position],
                                               damage_values[position],
                                               c,
                                               status[i],
