@@ -582,8 +582,7 @@ namespace VPContact
 
     // zeta at the quadrature points from its nodal values (the ghosted
     // compact vector damage) and the shape values on the reference cell
-    // (see reference_shape_values()).
-    FEValues<dim>            fe_values(fe, quadrature, update_JxW_values);
+    // (see reference_shape_values()); JxW as stored with the stress history.
     const auto              &shape = damage_system.shape_functions();
     const FullMatrix<double> psi
       = reference_shape_values(fe, shape, quadrature);
@@ -593,18 +592,18 @@ namespace VPContact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
+          const auto JxW = stress_history.JxW(cell);
           damage_system.dof_indices(cell, dof_indices);
           for (unsigned int a = 0; a < shape.size(); ++a)
             nodal[a] = damage(dof_indices[a]);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (unsigned int q = 0; q < JxW.size(); ++q)
             {
               double value = 0;
               for (unsigned int a = 0; a < shape.size(); ++a)
                 value += psi(q, a) * nodal[a];
-              volume += fe_values.JxW(q);
+              volume += JxW[q];
               if (value < 1. - 1e-12)
-                damaged += fe_values.JxW(q);
+                damaged += JxW[q];
             }
         }
     const double fraction = Utilities::MPI::sum(damaged, mpi_communicator)

@@ -178,11 +178,17 @@ namespace VPContact
   {
     // sigma_0 = 0 at every quadrature point of every locally owned cell;
     // compute_initial_state() replaces it where the scene asks for elastic
-    // equilibrium.
+    // equilibrium. The JxW of the points are stored with them, once per
+    // mesh (see StressHistory).
     stress_history.clear();
-    for (const auto &cell : triangulation.active_cell_iterators())
+    FEValues<dim> fe_values(fe, quadrature, update_JxW_values);
+    for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        stress_history.initialize(cell, quadrature.size());
+        {
+          stress_history.initialize(cell, quadrature.size());
+          fe_values.reinit(cell);
+          stress_history.set_JxW(cell, fe_values.get_JxW_values());
+        }
   }
 
 

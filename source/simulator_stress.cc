@@ -124,21 +124,20 @@ namespace VPContact
     // The cell average of the quadrature point stress: its L2 projection on
     // piecewise constants, the paper's P_Q (exact for the stress of a
     // parallelogram cell, which is constant).
-    FEValues<dim> fe_values(fe, quadrature, update_JxW_values);
     von_mises.reinit(triangulation.n_active_cells());
     components.assign(SymmetricTensor<2, dim>::n_independent_components,
                       Vector<double>(triangulation.n_active_cells()));
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
           const auto              history = stress_history.get_data(cell);
+          const auto              JxW     = stress_history.JxW(cell);
           SymmetricTensor<2, dim> average;
           double                  volume = 0;
-          for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (unsigned int q = 0; q < history.size(); ++q)
             {
-              average += history[q].stress * fe_values.JxW(q);
-              volume += fe_values.JxW(q);
+              average += history[q].stress * JxW[q];
+              volume += JxW[q];
             }
           average /= volume;
           const unsigned int index = cell->active_cell_index();
@@ -158,16 +157,15 @@ namespace VPContact
     // elastic body it equals 1/2 (E eps(u), eps(u)); viscous relaxation
     // lowers it.
     const SymmetricTensor<4, dim> compliance = invert(material.stiffness());
-    FEValues<dim>                 fe_values(fe, quadrature, update_JxW_values);
-    double                        energy = 0;
+    double                        energy     = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
           const auto history = stress_history.get_data(cell);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
+          const auto JxW     = stress_history.JxW(cell);
+          for (unsigned int q = 0; q < history.size(); ++q)
             energy += 0.5 * (compliance * history[q].stress) * history[q].stress
-                      * fe_values.JxW(q);
+                      * JxW[q];
         }
     return Utilities::MPI::sum(energy, mpi_communicator);
   }

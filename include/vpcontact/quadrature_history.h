@@ -74,6 +74,11 @@ namespace VPContact
    * run that visits every cell several times per step that was 7 % of the
    * run time.) Valid until the mesh changes; clear() and initialize() set
    * it up again on the new mesh.
+   *
+   * It also keeps the JxW of every point, given once per mesh by
+   * set_JxW(): the passes that only integrate what is stored here (cell
+   * stresses, elastic energy, damage statistics) then need no FEValues,
+   * whose reinit() recomputes the mapping on every cell in every step.
    */
   template <int dim>
   class StressHistory
@@ -85,6 +90,7 @@ namespace VPContact
     clear()
     {
       data.clear();
+      weights.clear();
       initialized.clear();
       n_points = 0;
     }
@@ -99,6 +105,7 @@ namespace VPContact
         {
           n_points = n_q_points;
           data.resize(cell->get_triangulation().n_active_cells() * n_points);
+          weights.assign(data.size(), 0.);
           initialized.assign(cell->get_triangulation().n_active_cells(), false);
         }
       const unsigned int c = cell->active_cell_index();
@@ -122,8 +129,28 @@ namespace VPContact
       return {data.data() + cell->active_cell_index() * n_points, n_points};
     }
 
+    /// Store the JxW values @p JxW of the points of @p cell (initialized).
+    void
+    set_JxW(const cell_iterator &cell, const std::vector<double> &JxW)
+    {
+      Assert(initialized[cell->active_cell_index()], ExcInternalError());
+      AssertDimension(JxW.size(), n_points);
+      std::copy(JxW.begin(),
+                JxW.end(),
+                weights.begin() + cell->active_cell_index() * n_points);
+    }
+
+    /// The JxW values of the points of @p cell, as given to set_JxW().
+    ArrayView<const double>
+    JxW(const cell_iterator &cell) const
+    {
+      Assert(initialized[cell->active_cell_index()], ExcInternalError());
+      return {weights.data() + cell->active_cell_index() * n_points, n_points};
+    }
+
   private:
     std::vector<QuadraturePointHistory<dim>> data;
+    std::vector<double>                      weights;
     std::vector<bool>                        initialized;
     unsigned int                             n_points = 0;
   };
