@@ -1,5 +1,6 @@
 // The simulator's assembly: the elastic stiffness matrix (once per mesh) and
 // the right-hand side of a step, which carries the stress history.
+#include <vpcontact/cell_state.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -100,40 +101,33 @@ namespace VPContact
   {
     // (f_B(t), phi_i) + (f_N(t), phi_i)_{Gamma_N}, at the time last given to
     // boundary_conditions.set_time(); fe_values is reinitialized on cell.
-    // The load vectors are allocated only where there is a load: this runs
-    // on every cell of every step, and most cells have none.
-    const FEValuesExtractors::Vector u(0);
-    Tensor<1, dim>                   load_tensor;
+    // add_load() adds (f, phi_i) at the points of its FEValues, for the
+    // body force on the cell and the traction on a face alike; it runs (and
+    // allocates its load vector) only where there is a load, since this
+    // runs on every cell of every step and most cells have none.
+    const auto add_load = [&](const Function<dim>     &load_function,
+                              const FEValuesBase<dim> &values) {
+      const FEValuesExtractors::Vector u(0);
+      Vector<double>                   load(dim);
+      Tensor<1, dim>                   load_tensor;
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          load_function.vector_value(values.quadrature_point(q), load);
+          for (unsigned int d = 0; d < dim; ++d)
+            load_tensor[d] = load[d];
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            cell_vector(i)
+              += load_tensor * values[u].value(i, q) * values.JxW(q);
+        }
+    };
     if (boundary_conditions.has_body_force())
-      {
-        Vector<double> load(dim);
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            boundary_conditions.body_force()
-              .vector_value(fe_values.quadrature_point(q), load);
-            for (unsigned int d = 0; d < dim; ++d)
-              load_tensor[d] = load[d];
-            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-              cell_vector(i)
-                += load_tensor * fe_values[u].value(i, q) * fe_values.JxW(q);
-          }
-      }
+      add_load(boundary_conditions.body_force(), fe_values);
     for (const auto &face : cell->face_iterators())
       if (face->at_boundary()
           && boundary_conditions.is_traction_boundary(face->boundary_id()))
         {
           fe_face_values.reinit(cell, face);
-          Vector<double> load(dim);
-          for (const unsigned int q : fe_face_values.quadrature_point_indices())
-            {
-              boundary_conditions.traction()
-                .vector_value(fe_face_values.quadrature_point(q), load);
-              for (unsigned int d = 0; d < dim; ++d)
-                load_tensor[d] = load[d];
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                cell_vector(i) += load_tensor * fe_face_values[u].value(i, q)
-                                  * fe_face_values.JxW(q);
-            }
+          add_load(boundary_conditions.traction(), fe_face_values);
         }
   }
 
@@ -156,7 +150,6 @@ namespace VPContact
     const bool   evaluate_rate
       = with_viscoplastic_rate && !viscoplastic_law->is_zero();
     const bool                       with_damage = damage_model.is_active();
-    const FEValuesExtractors::Scalar zeta(dim);
     std::vector<double>              damage_values(quadrature.size(), 1.);
     AssemblyScratch                  scratch(fe, quadrature);
     FEValues<dim>                   &fe_values      = scratch.fe_values;
@@ -171,11 +164,9 @@ namespace VPContact
     const std::vector<unsigned int>      displacement_shape
       = displacement_shape_functions(fe);
 
-    // Why the nodal values are read once per cell and the loop over i runs
-    // over the displacement shape functions only: this pass visits every
-    // cell in every step, and reading a ghosted Trilinos vector costs an
-    // index lookup per entry (get_function_values() and its siblings read
-    // the cell's entries again for each call, into a fresh heap vector).
+    // The nodal values are read once per cell (see evaluate_cell_state()),
+    // and the loop over i runs over the displacement shape functions only:
+    // this pass visits every cell in every step.
     rhs = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -183,19 +174,12 @@ namespace VPContact
           cell_rhs = 0.;
           fe_values.reinit(cell);
           if (evaluate_rate || with_damage)
-            {
-              cell->get_dof_values(solution,
-                                   local_solution.begin(),
-                                   local_solution.end());
-              fe_values[u]
-                .get_function_symmetric_gradients_from_local_dof_values(
-                  local_solution,
-                  strains);
-            }
-          if (with_damage)
-            fe_values[zeta].get_function_values_from_local_dof_values(
-              local_solution,
-              damage_values);
+            evaluate_cell_state(cell,
+                                fe_values,
+                                solution,
+                                local_solution,
+                                strains,
+                                with_damage ? &damage_values : nullptr);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {

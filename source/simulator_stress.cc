@@ -1,6 +1,7 @@
 // The simulator's stress: the update sigma_n = sigma_{n-1} + k G_{n-1} +
 // E eps(du) at every quadrature point, its safeguards, and the quantities
 // derived from it for output.
+#include <vpcontact/cell_state.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
@@ -21,8 +22,6 @@ namespace VPContact
                             quadrature,
                             update_values | update_gradients
                               | update_JxW_values);
-    const FEValuesExtractors::Vector     u(0);
-    const FEValuesExtractors::Scalar     zeta(dim);
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<double>                  damage_values(quadrature.size(), 1.);
@@ -39,27 +38,19 @@ namespace VPContact
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          // The nodal values are read once per vector (see assemble_rhs()).
-          cell->get_dof_values(increment,
-                               local_increment.begin(),
-                               local_increment.end());
-          fe_values[u].get_function_symmetric_gradients_from_local_dof_values(
-            local_increment,
-            strain_increments);
+          evaluate_cell_state(cell,
+                              fe_values,
+                              increment,
+                              local_increment,
+                              strain_increments);
           if (implicit)
-            {
-              cell->get_dof_values(solution,
-                                   local_solution.begin(),
-                                   local_solution.end());
-              fe_values[u]
-                .get_function_symmetric_gradients_from_local_dof_values(
-                  local_solution,
-                  strains);
-              if (damage_model.is_active())
-                fe_values[zeta].get_function_values_from_local_dof_values(
-                  local_solution,
-                  damage_values);
-            }
+            evaluate_cell_state(cell,
+                                fe_values,
+                                solution,
+                                local_solution,
+                                strains,
+                                damage_model.is_active() ? &damage_values :
+                                                           nullptr);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
