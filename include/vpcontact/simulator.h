@@ -348,7 +348,14 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector damage_residual_owned;
     TrilinosWrappers::MPI::Vector damage_residual;
     TrilinosWrappers::MPI::Vector lumped_mass;
-    unsigned int                  last_damage_iterations = 0;
+    /// For each locally owned cell (by active cell index), per damage shape
+    /// function: its Gauss-Lobatto mass int_K psi_a, and the position of its
+    /// node in the local storage of the ghosted vector damage. Set once per
+    /// mesh by setup_mass_and_bounds(), read by the damage load of every
+    /// step, which then needs no FEValues and no index lookups.
+    std::vector<double>       damage_cell_mass;
+    std::vector<unsigned int> damage_cell_positions;
+    unsigned int              last_damage_iterations = 0;
     /// How many whole rings of nodes the front of the upper damage bound
     /// moved in the previous step (DamageBounds::rings_moved()): the next
     /// step frees as many ahead of it.
