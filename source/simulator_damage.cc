@@ -397,6 +397,7 @@ namespace VPContact
     // settle, the plain primal-dual active set method from the sets of the
     // previous step, every solve to the Solver tolerance.
     damage_bounds.begin_step(K);
+    damage_system.begin_step();
     const DamageBounds previous_sets = damage_bounds;
     if (!find_damage_sets_fast(step_rhs))
       {

@@ -5,10 +5,13 @@
 #ifndef vpcontact_damage_system_h
 #define vpcontact_damage_system_h
 
+#include <vpcontact/damage_region_solver.h>
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -125,10 +128,11 @@ namespace VPContact
 
     /**
      * Solve K_FF x_F = b_F on the free nodes, x = 0 on the nodes listed in
-     * @p held (local positions, see local_position()): CG on
-     * P K P + (I - P), P zeroing the held entries, preconditioned alike by
-     * P C P + (I - P) for the preconditioner C of K, so that neither the
-     * matrix nor C is rebuilt when the held set changes. @p b and @p x
+     * @p held (local positions, see local_position()). With the incomplete
+     * Cholesky preconditioner: CG over the free nodes alone
+     * (DamageRegionSolver). With AMG: CG on P K P + (I - P), P zeroing the
+     * held entries, preconditioned alike by P C P + (I - P) for the AMG C
+     * of K, so that neither is rebuilt when the held set changes. @p b and @p x
      * must be zero on the held nodes (@p x is the start vector). Stops at a
      * residual of @p tolerance times |b|; throws a message naming the
      * Solver parameters otherwise. Returns the number of CG iterations.
@@ -138,7 +142,12 @@ namespace VPContact
           TrilinosWrappers::MPI::Vector       &x,
           const std::vector<unsigned int>     &held,
           const double                         tolerance,
-          const unsigned int                   max_iterations) const;
+          const unsigned int                   max_iterations);
+
+    /// A new time step begins: with the incomplete Cholesky preconditioner
+    /// the region of its solves is built anew (see DamageRegionSolver).
+    void
+    begin_step();
 
   private:
     /// Sets the index sets, full_position and cell_dofs; returns a ghosted
@@ -149,6 +158,13 @@ namespace VPContact
                 const IndexSet        &locally_owned_dofs,
                 const IndexSet        &locally_relevant_dofs,
                 const MPI_Comm         communicator);
+
+    /// CG with the AMG of K, masked on the held nodes (see solve()).
+    void
+    solve_masked(const TrilinosWrappers::MPI::Vector &b,
+                 TrilinosWrappers::MPI::Vector       &x,
+                 const std::vector<unsigned int>     &held,
+                 SolverControl                       &control) const;
 
     static types::global_dof_index
     to_compact(const TrilinosWrappers::MPI::Vector &index,
@@ -174,6 +190,8 @@ namespace VPContact
     Preconditioner preconditioner_kind = Preconditioner::incomplete_cholesky;
     TrilinosWrappers::SparseMatrix                      system_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
+    /// The solver with the incomplete Cholesky preconditioner.
+    DamageRegionSolver region_solver;
   };
 } // namespace VPContact
 

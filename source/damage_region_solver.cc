@@ -1,0 +1,359 @@
+// CG for the damage problem on the free nodes, with IC(0) of a region
+// around them (see damage_region_solver.h).
+#include <vpcontact/damage_region_solver.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_index_access.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace VPContact
+{
+  void
+  DamageRegionSolver::initialize(const TrilinosWrappers::SparseMatrix &matrix,
+                                 const IndexSet                       &owned,
+                                 const MPI_Comm communicator_in)
+  {
+    communicator  = communicator_in;
+    serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
+    n_owned       = owned.n_elements();
+    // The ghosted layout the products read: the owned entries and every
+    // column of the owned rows. (Not the relevant damage dofs of the mesh:
+    // on adaptive meshes the rows gather entries from other ranks' cells
+    // whose columns this rank does not see.)
+    const Epetra_CrsMatrix &K          = matrix.trilinos_matrix();
+    const Epetra_BlockMap  &column_map = K.ColMap();
+    IndexSet                columns(owned);
+    for (int c = 0; c < column_map.NumMyElements(); ++c)
+      columns.add_index(TrilinosWrappers::global_index(column_map, c));
+    columns.compress();
+    direction.reinit(owned, communicator);
+    direction_ghosted.reinit(owned, columns, communicator);
+
+    // The local storage of an owned vector lists the owned indices in
+    // ascending order, as the row map of the matrix does, so a row's local
+    // index is its owned position. The columns are translated from the
+    // matrix's column map to the ghosted vector's layout.
+    const Epetra_BlockMap &ghosted_map
+      = direction_ghosted.trilinos_vector().Map();
+    std::vector<unsigned int> ghosted_of_column(column_map.NumMyElements());
+    for (unsigned int c = 0; c < ghosted_of_column.size(); ++c)
+      {
+        const int position
+          = ghosted_map.LID(TrilinosWrappers::global_index(column_map, c));
+        AssertThrow(position >= 0, ExcInternalError());
+        ghosted_of_column[c] = position;
+      }
+    owned_of_ghosted.assign(ghosted_map.NumMyElements(), -1);
+    for (unsigned int g = 0; g < owned_of_ghosted.size(); ++g)
+      {
+        const types::global_dof_index index
+          = TrilinosWrappers::global_index(ghosted_map, g);
+        if (owned.is_element(index))
+          owned_of_ghosted[g] = owned.index_within_set(index);
+      }
+
+    AssertThrow(static_cast<unsigned int>(K.NumMyRows()) == n_owned,
+                ExcInternalError());
+    row_start.assign(1, 0);
+    column.clear();
+    value.clear();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        int     n_entries = 0;
+        double *values    = nullptr;
+        int    *indices   = nullptr;
+        K.ExtractMyRowView(i, n_entries, values, indices);
+        for (int e = 0; e < n_entries; ++e)
+          {
+            column.push_back(ghosted_of_column[indices[e]]);
+            value.push_back(values[e]);
+          }
+        row_start.push_back(column.size());
+      }
+
+    is_free.assign(n_owned, false);
+    free_nodes.clear();
+    residual.assign(n_owned, 0.);
+    preconditioned.assign(n_owned, 0.);
+    product.assign(n_owned, 0.);
+    direction    = 0.;
+    region_valid = false;
+    builds       = 0;
+  }
+
+
+
+  void
+  DamageRegionSolver::begin_step()
+  {
+    region_valid = false;
+  }
+
+
+
+  unsigned int
+  DamageRegionSolver::n_region_builds() const
+  {
+    return builds;
+  }
+
+
+
+  void
+  DamageRegionSolver::build_region(const unsigned int rings)
+  {
+    // R: the free nodes, then ring after ring of their owned neighbours in
+    // the matrix graph (ghost columns are left to their own rank).
+    std::vector<bool>         in_region(is_free);
+    std::vector<unsigned int> front(free_nodes);
+    for (unsigned int ring = 0; ring < rings; ++ring)
+      {
+        std::vector<unsigned int> next;
+        for (const unsigned int i : front)
+          for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
+            {
+              const int j = owned_of_ghosted[column[e]];
+              if (j >= 0 && !in_region[j])
+                {
+                  in_region[j] = true;
+                  next.push_back(j);
+                }
+            }
+        front.swap(next);
+      }
+    region.clear();
+    region_index.assign(n_owned, -1);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (in_region[i])
+        {
+          region_index[i] = region.size();
+          region.push_back(i);
+        }
+    factorize_region();
+    region_valid = true;
+    ++builds;
+  }
+
+
+
+  void
+  DamageRegionSolver::factorize_region()
+  {
+    // The lower triangle of K_RR in region indices, each row sorted, then
+    // IC(0) in place: L_kj = (a_kj - sum_{i<j} L_ki L_ji) / L_jj on the
+    // pattern of K, L_kk = sqrt(a_kk - sum_{j<k} L_kj^2). For the M-matrix
+    // of the paper's meshes (squares) the pivots stay positive; should one
+    // not, the diagonal of K is kept for it, which still gives an SPD
+    // preconditioner.
+    const unsigned int n = region.size();
+    factor_start.assign(1, 0);
+    factor_column.clear();
+    factor_value.clear();
+    factor_diagonal.assign(n, 0.);
+    std::vector<std::pair<unsigned int, double>> row;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const unsigned int i = region[k];
+        row.clear();
+        for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
+          {
+            const int j = owned_of_ghosted[column[e]];
+            if (j < 0 || region_index[j] < 0)
+              continue;
+            const unsigned int r = region_index[j];
+            if (r < k)
+              row.emplace_back(r, value[e]);
+            else if (r == k)
+              factor_diagonal[k] = value[e];
+          }
+        std::sort(row.begin(), row.end());
+        for (const auto &[r, a] : row)
+          {
+            factor_column.push_back(r);
+            factor_value.push_back(a);
+          }
+        factor_start.push_back(factor_column.size());
+      }
+
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        double pivot = factor_diagonal[k];
+        for (unsigned int e = factor_start[k]; e < factor_start[k + 1]; ++e)
+          {
+            const unsigned int j = factor_column[e];
+            // sum_{i<j} L_ki L_ji over the columns rows k and j share.
+            double       s = factor_value[e];
+            unsigned int a = factor_start[k], b = factor_start[j];
+            while (a < e && b < factor_start[j + 1])
+              if (factor_column[a] < factor_column[b])
+                ++a;
+              else if (factor_column[b] < factor_column[a])
+                ++b;
+              else
+                s -= factor_value[a++] * factor_value[b++];
+            factor_value[e] = s / factor_diagonal[j];
+            pivot -= factor_value[e] * factor_value[e];
+          }
+        factor_diagonal[k] = std::sqrt(pivot > 0. ? pivot : factor_diagonal[k]);
+      }
+    region_work.assign(n, 0.);
+  }
+
+
+
+  void
+  DamageRegionSolver::vmult_free(std::vector<double> &dst, const double *src)
+  {
+    for (const unsigned int i : free_nodes)
+      {
+        double s = 0;
+        for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
+          s += value[e] * src[column[e]];
+        dst[i] = s;
+      }
+  }
+
+
+
+  void
+  DamageRegionSolver::precondition_free(std::vector<double>       &dst,
+                                        const std::vector<double> &src)
+  {
+    // y = (L L^T)^{-1} src on R (src vanishes on R \ F), then dst = y on F.
+    std::vector<double> &y = region_work;
+    const unsigned int   n = region.size();
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        double s = src[region[k]];
+        for (unsigned int e = factor_start[k]; e < factor_start[k + 1]; ++e)
+          s -= factor_value[e] * y[factor_column[e]];
+        y[k] = s / factor_diagonal[k];
+      }
+    for (unsigned int k = n; k-- > 0;)
+      {
+        y[k] /= factor_diagonal[k];
+        for (unsigned int e = factor_start[k]; e < factor_start[k + 1]; ++e)
+          y[factor_column[e]] -= factor_value[e] * y[k];
+      }
+    for (const unsigned int i : free_nodes)
+      dst[i] = y[region_index[i]];
+  }
+
+
+
+  double
+  DamageRegionSolver::dot_free(const std::vector<double> &a,
+                               const std::vector<double> &b) const
+  {
+    double s = 0;
+    for (const unsigned int i : free_nodes)
+      s += a[i] * b[i];
+    return serial_layout ? s : Utilities::MPI::sum(s, communicator);
+  }
+
+
+
+  unsigned int
+  DamageRegionSolver::solve(const TrilinosWrappers::MPI::Vector &b_vector,
+                            TrilinosWrappers::MPI::Vector       &x_vector,
+                            const std::vector<unsigned int>     &held,
+                            const double                         tolerance,
+                            const unsigned int                   max_iterations)
+  {
+    // The free set of this solve, and a region that holds it.
+    std::fill(is_free.begin(), is_free.end(), true);
+    for (const unsigned int i : held)
+      is_free[i] = false;
+    free_nodes.clear();
+    bool covered = region_valid;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (is_free[i])
+        {
+          free_nodes.push_back(i);
+          covered = covered && region_index[i] >= 0;
+        }
+    if (!covered)
+      build_region(2);
+
+    const double *b = b_vector.begin();
+    double       *x = x_vector.begin();
+    double       *p = direction.begin();
+    // The search direction, zero off F, also in the ghosted layout where
+    // the matrix reads it.
+    const auto product_with_direction = [&]() {
+      if (serial_layout)
+        vmult_free(product, p);
+      else
+        {
+          direction_ghosted = direction;
+          vmult_free(product, direction_ghosted.begin());
+        }
+    };
+
+    // r = b - K x with the start vector x (zero off F).
+    for (const unsigned int i : free_nodes)
+      p[i] = x[i];
+    product_with_direction();
+    double b_norm2 = 0;
+    for (const unsigned int i : free_nodes)
+      {
+        residual[i] = b[i] - product[i];
+        b_norm2 += b[i] * b[i];
+      }
+    b_norm2
+      = serial_layout ? b_norm2 : Utilities::MPI::sum(b_norm2, communicator);
+    const double target = tolerance * std::sqrt(b_norm2);
+
+    const auto clean_up = [&]() {
+      // Zero off the next solve's free set: zero on this one.
+      for (const unsigned int i : free_nodes)
+        p[i] = residual[i] = preconditioned[i] = product[i] = 0.;
+    };
+
+    double       residual_norm = std::sqrt(dot_free(residual, residual));
+    unsigned int iteration     = 0;
+    // NaN compares false: a non-finite residual is caught in the loop.
+    if (!(residual_norm <= target))
+      {
+        precondition_free(preconditioned, residual);
+        for (const unsigned int i : free_nodes)
+          p[i] = preconditioned[i];
+        double rz = dot_free(residual, preconditioned);
+        while (!(residual_norm <= target))
+          {
+            if (iteration == max_iterations || !std::isfinite(residual_norm))
+              {
+                clean_up();
+                throw SolverControl::NoConvergence(iteration, residual_norm);
+              }
+            ++iteration;
+            product_with_direction();
+            double pq = 0;
+            for (const unsigned int i : free_nodes)
+              pq += p[i] * product[i];
+            pq = serial_layout ? pq : Utilities::MPI::sum(pq, communicator);
+            const double alpha = rz / pq;
+            for (const unsigned int i : free_nodes)
+              {
+                x[i] += alpha * p[i];
+                residual[i] -= alpha * product[i];
+              }
+            residual_norm = std::sqrt(dot_free(residual, residual));
+            if (residual_norm <= target)
+              break;
+            precondition_free(preconditioned, residual);
+            const double rz_next = dot_free(residual, preconditioned);
+            const double beta    = rz_next / rz;
+            rz                   = rz_next;
+            for (const unsigned int i : free_nodes)
+              p[i] = preconditioned[i] + beta * p[i];
+          }
+      }
+    clean_up();
+    return iteration;
+  }
+} // namespace VPContact
