@@ -352,6 +352,15 @@ namespace VPContact
 
   template <int dim>
   unsigned int
+  DamageSystem<dim>::n_region_builds() const
+  {
+    return region_solver.n_region_builds();
+  }
+
+
+
+  template <int dim>
+  unsigned int
   DamageSystem<dim>::solve(const TrilinosWrappers::MPI::Vector &b,
                            TrilinosWrappers::MPI::Vector       &x,
                            const std::vector<unsigned int>     &held,

@@ -149,6 +149,11 @@ namespace VPContact
     void
     begin_step();
 
+    /// How often the incomplete Cholesky solver built its region on this
+    /// rank (see DamageRegionSolver).
+    unsigned int
+    n_region_builds() const;
+
   private:
     /// Sets the index sets, full_position and cell_dofs; returns a ghosted
     /// FESystem vector holding the compact index of every relevant damage
