@@ -200,6 +200,11 @@ namespace VPContact
           }
         factor_diagonal[k] = std::sqrt(pivot > 0. ? pivot : factor_diagonal[k]);
       }
+    // Multiplications instead of divisions in the two sweeps, which run in
+    // every CG iteration.
+    inverse_diagonal.resize(n);
+    for (unsigned int k = 0; k < n; ++k)
+      inverse_diagonal[k] = 1. / factor_diagonal[k];
     region_work.assign(n, 0.);
   }
 
@@ -231,11 +236,11 @@ namespace VPContact
         double s = src[region[k]];
         for (unsigned int e = factor_start[k]; e < factor_start[k + 1]; ++e)
           s -= factor_value[e] * y[factor_column[e]];
-        y[k] = s / factor_diagonal[k];
+        y[k] = s * inverse_diagonal[k];
       }
     for (unsigned int k = n; k-- > 0;)
       {
-        y[k] /= factor_diagonal[k];
+        y[k] *= inverse_diagonal[k];
         for (unsigned int e = factor_start[k]; e < factor_start[k + 1]; ++e)
           y[factor_column[e]] -= factor_value[e] * y[k];
       }

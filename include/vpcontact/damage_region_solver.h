@@ -122,6 +122,7 @@ namespace VPContact
     std::vector<unsigned int> factor_column;
     std::vector<double>       factor_value;
     std::vector<double>       factor_diagonal;
+    std::vector<double>       inverse_diagonal;
     bool                      region_valid = false;
     unsigned int              builds       = 0;
 
