@@ -32,6 +32,9 @@ namespace VPContact
     columns.compress();
     direction.reinit(owned, communicator);
     direction_ghosted.reinit(owned, columns, communicator);
+    importer = std::make_unique<Epetra_Import>(
+      direction_ghosted.trilinos_vector().Map(),
+      direction.trilinos_vector().Map());
 
     // The local storage of an owned vector lists the owned indices in
     // ascending order, as the row map of the matrix does, so a row's local
@@ -257,19 +260,14 @@ namespace VPContact
     double s = 0;
     for (const unsigned int i : free_nodes)
       s += a[i] * b[i];
-    return serial_layout ? s : Utilities::MPI::sum(s, communicator);
+    return global_sum(s);
   }
 
 
 
-  unsigned int
-  DamageRegionSolver::solve(const TrilinosWrappers::MPI::Vector &b_vector,
-                            TrilinosWrappers::MPI::Vector       &x_vector,
-                            const std::vector<unsigned int>     &held,
-                            const double                         tolerance,
-                            const unsigned int                   max_iterations)
+  void
+  DamageRegionSolver::select_free_nodes(const std::vector<unsigned int> &held)
   {
-    // The free set of this solve, and a region that holds it.
     std::fill(is_free.begin(), is_free.end(), true);
     for (const unsigned int i : held)
       is_free[i] = false;
@@ -283,82 +281,106 @@ namespace VPContact
         }
     if (!covered)
       build_region(2);
+  }
 
+
+
+  void
+  DamageRegionSolver::multiply_direction()
+  {
+    // The search direction vanishes off F; on several ranks the products
+    // read it in the ghosted layout.
+    if (serial_layout)
+      vmult_free(product, direction.begin());
+    else
+      {
+        const int error
+          = direction_ghosted.trilinos_vector()
+              .Import(direction.trilinos_vector(), *importer, Insert);
+        AssertThrow(error == 0, ExcTrilinosError(error));
+        vmult_free(product, direction_ghosted.begin());
+      }
+  }
+
+
+
+  double
+  DamageRegionSolver::global_sum(const double local) const
+  {
+    return serial_layout ? local : Utilities::MPI::sum(local, communicator);
+  }
+
+
+
+  unsigned int
+  DamageRegionSolver::solve(const TrilinosWrappers::MPI::Vector &b_vector,
+                            TrilinosWrappers::MPI::Vector       &x_vector,
+                            const std::vector<unsigned int>     &held,
+                            const double                         tolerance,
+                            const unsigned int                   max_iterations)
+  {
+    select_free_nodes(held);
     const double *b = b_vector.begin();
     double       *x = x_vector.begin();
     double       *p = direction.begin();
-    // The search direction, zero off F, also in the ghosted layout where
-    // the matrix reads it.
-    const auto product_with_direction = [&]() {
-      if (serial_layout)
-        vmult_free(product, p);
-      else
-        {
-          direction_ghosted = direction;
-          vmult_free(product, direction_ghosted.begin());
-        }
-    };
 
     // r = b - K x with the start vector x (zero off F).
     for (const unsigned int i : free_nodes)
       p[i] = x[i];
-    product_with_direction();
+    multiply_direction();
     double b_norm2 = 0;
     for (const unsigned int i : free_nodes)
       {
         residual[i] = b[i] - product[i];
         b_norm2 += b[i] * b[i];
       }
-    b_norm2
-      = serial_layout ? b_norm2 : Utilities::MPI::sum(b_norm2, communicator);
-    const double target = tolerance * std::sqrt(b_norm2);
+    const double target = tolerance * std::sqrt(global_sum(b_norm2));
 
-    const auto clean_up = [&]() {
-      // Zero off the next solve's free set: zero on this one.
-      for (const unsigned int i : free_nodes)
-        p[i] = residual[i] = preconditioned[i] = product[i] = 0.;
-    };
-
+    // Preconditioned CG on F. NaN compares false: a non-finite residual
+    // ends in NoConvergence, as too many iterations do.
     double       residual_norm = std::sqrt(dot_free(residual, residual));
     unsigned int iteration     = 0;
-    // NaN compares false: a non-finite residual is caught in the loop.
-    if (!(residual_norm <= target))
+    double       rz            = 0;
+    while (!(residual_norm <= target))
       {
-        precondition_free(preconditioned, residual);
-        for (const unsigned int i : free_nodes)
-          p[i] = preconditioned[i];
-        double rz = dot_free(residual, preconditioned);
-        while (!(residual_norm <= target))
+        if (iteration == max_iterations || !std::isfinite(residual_norm))
           {
-            if (iteration == max_iterations || !std::isfinite(residual_norm))
-              {
-                clean_up();
-                throw SolverControl::NoConvergence(iteration, residual_norm);
-              }
-            ++iteration;
-            product_with_direction();
-            double pq = 0;
-            for (const unsigned int i : free_nodes)
-              pq += p[i] * product[i];
-            pq = serial_layout ? pq : Utilities::MPI::sum(pq, communicator);
-            const double alpha = rz / pq;
-            for (const unsigned int i : free_nodes)
-              {
-                x[i] += alpha * p[i];
-                residual[i] -= alpha * product[i];
-              }
-            residual_norm = std::sqrt(dot_free(residual, residual));
-            if (residual_norm <= target)
-              break;
-            precondition_free(preconditioned, residual);
-            const double rz_next = dot_free(residual, preconditioned);
-            const double beta    = rz_next / rz;
-            rz                   = rz_next;
-            for (const unsigned int i : free_nodes)
-              p[i] = preconditioned[i] + beta * p[i];
+            clean_up();
+            throw SolverControl::NoConvergence(iteration, residual_norm);
           }
+        precondition_free(preconditioned, residual);
+        const double rz_next = dot_free(residual, preconditioned);
+        const double beta    = (iteration == 0 ? 0. : rz_next / rz);
+        rz                   = rz_next;
+        for (const unsigned int i : free_nodes)
+          p[i] = preconditioned[i] + beta * p[i];
+        ++iteration;
+
+        multiply_direction();
+        double pq = 0;
+        for (const unsigned int i : free_nodes)
+          pq += p[i] * product[i];
+        const double alpha = rz / global_sum(pq);
+        for (const unsigned int i : free_nodes)
+          {
+            x[i] += alpha * p[i];
+            residual[i] -= alpha * product[i];
+          }
+        residual_norm = std::sqrt(dot_free(residual, residual));
       }
     clean_up();
     return iteration;
+  }
+
+
+
+  void
+  DamageRegionSolver::clean_up()
+  {
+    // The work vectors must vanish off the next solve's free set: zero them
+    // on this one.
+    double *p = direction.begin();
+    for (const unsigned int i : free_nodes)
+      p[i] = residual[i] = preconditioned[i] = product[i] = 0.;
   }
 } // namespace VPContact
