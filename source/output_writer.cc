@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <sstream>
 
 namespace VPContact
 {
@@ -28,6 +30,37 @@ namespace VPContact
     AssertThrow(!error,
                 ExcMessage("Cannot rename " + temporary + " to " + filename
                            + ": " + error.message()));
+  }
+
+
+
+  void
+  write_on_rank_zero(const MPI_Comm               communicator,
+                     const std::function<void()> &write)
+  {
+    // Only rank 0 writes, but every rank must stop if it fails: the others
+    // would otherwise wait for it in the next collective call for ever.
+    std::string problem;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      try
+        {
+          write();
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream message;
+          e.print_info(message);
+          problem = message.str();
+          while (!problem.empty()
+                 && (problem.back() == '\n' || problem.back() == ' '))
+            problem.pop_back();
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
+    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    AssertThrow(problem.empty(), ExcMessage(problem));
   }
 
 
@@ -158,12 +191,11 @@ namespace VPContact
   void
   OutputWriter<dim>::write_pvd_record(const MPI_Comm communicator) const
   {
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        std::ostringstream pvd;
-        DataOutBase::write_pvd_record(pvd, times_and_names);
-        write_file_atomically(output_directory + "/solution.pvd", pvd.str());
-      }
+    write_on_rank_zero(communicator, [&]() {
+      std::ostringstream pvd;
+      DataOutBase::write_pvd_record(pvd, times_and_names);
+      write_file_atomically(output_directory + "/solution.pvd", pvd.str());
+    });
   }
 
 
@@ -195,9 +227,10 @@ namespace VPContact
   OutputWriter<dim>::write_statistics(const Statistics &statistics,
                                       const MPI_Comm    communicator) const
   {
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+    write_on_rank_zero(communicator, [&]() {
       write_file_atomically(output_directory + "/statistics.csv",
                             statistics.to_csv());
+    });
   }
 
 

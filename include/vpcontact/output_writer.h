@@ -9,6 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -117,6 +118,15 @@ namespace VPContact
   void
   write_file_atomically(const std::string &filename,
                         const std::string &content);
+
+  /**
+   * Call @p write on rank 0 of @p communicator only; if it throws, every
+   * rank throws its message, so that a failed write stops the whole run
+   * instead of leaving the other ranks waiting for rank 0.
+   */
+  void
+  write_on_rank_zero(const MPI_Comm               communicator,
+                     const std::function<void()> &write);
 } // namespace VPContact
 
 #endif
