@@ -275,31 +275,17 @@ namespace VPContact
   {
     const std::string new_folder = checkpoint_folder + ".new";
     const std::string old_folder = checkpoint_folder + ".old";
-    std::string       problem;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      try
-        {
-          write_file_atomically(new_folder + "/checkpoint.json",
-                                metadata.to_json());
-          CheckpointManifest::write(new_folder);
-          // The manifest is on disk: the new checkpoint is complete. Only
-          // now may the one before the previous go.
-          std::filesystem::remove_all(old_folder);
-          if (std::filesystem::exists(checkpoint_folder))
-            std::filesystem::rename(checkpoint_folder, old_folder);
-          std::filesystem::rename(new_folder, checkpoint_folder);
-        }
-      catch (const ExceptionBase &e)
-        {
-          std::ostringstream info;
-          e.print_info(info);
-          problem = Utilities::trim(info.str());
-        }
-      catch (const std::exception &e)
-        {
-          problem = e.what();
-        }
-    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    const std::string problem    = problem_on_rank_zero(communicator, [&]() {
+      write_file_atomically(new_folder + "/checkpoint.json",
+                            metadata.to_json());
+      CheckpointManifest::write(new_folder);
+      // The manifest is on disk: the new checkpoint is complete. Only now
+      // may the one before the previous go.
+      std::filesystem::remove_all(old_folder);
+      if (std::filesystem::exists(checkpoint_folder))
+        std::filesystem::rename(checkpoint_folder, old_folder);
+      std::filesystem::rename(new_folder, checkpoint_folder);
+    });
     AssertThrow(problem.empty(),
                 ExcMessage("Writing the checkpoint " + checkpoint_folder
                            + " failed: " + problem

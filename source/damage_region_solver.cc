@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace VPContact
 {
@@ -334,7 +333,16 @@ namespace VPContact
         residual[i] = b[i] - product[i];
         b_norm2 += b[i] * b[i];
       }
-    const double target = tolerance * std::sqrt(global_sum(b_norm2));
+    b_norm2 = global_sum(b_norm2);
+    if (b_norm2 == 0.)
+      {
+        // K_FF x_F = 0: x = 0, without iterations.
+        for (const unsigned int i : free_nodes)
+          x[i] = 0.;
+        clean_up();
+        return 0;
+      }
+    const double target = tolerance * std::sqrt(b_norm2);
 
     // Preconditioned CG on F. NaN compares false: a non-finite residual
     // ends in NoConvergence, as too many iterations do.

@@ -367,8 +367,12 @@ namespace VPContact
                            const double                         tolerance,
                            const unsigned int                   max_iterations)
   {
-    const double b_norm = b.l2_norm();
-    if (b_norm == 0.)
+    // The region solver measures |b| on the free nodes itself (b vanishes
+    // on the held ones), and returns x = 0 for b = 0.
+    const bool region
+      = (preconditioner_kind == Preconditioner::incomplete_cholesky);
+    const double b_norm = (region ? 0. : b.l2_norm());
+    if (!region && b_norm == 0.)
       {
         x = 0.;
         return 0;
@@ -376,18 +380,20 @@ namespace VPContact
     SolverControl control(max_iterations, tolerance * b_norm);
     try
       {
-        if (preconditioner_kind == Preconditioner::incomplete_cholesky)
+        if (region)
           return region_solver.solve(b, x, held, tolerance, max_iterations);
         solve_masked(b, x, held, control);
       }
     catch (const SolverControl::NoConvergence &e)
       {
+        // Every rank gets here in the same iteration (the residual is
+        // global), so the norm, a collective call, is safe here.
         AssertThrow(false,
                     ExcMessage("CG did not converge for the damage: after "
                                + std::to_string(e.last_step)
                                + " iterations the residual is "
                                + to_text(e.last_residual) + " > "
-                               + to_text(control.tolerance())
+                               + to_text(tolerance * b.l2_norm())
                                + ". Raise Solver/Maximum linear iterations or "
                                  "loosen Solver/Relative tolerance."));
       }

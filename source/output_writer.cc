@@ -34,32 +34,38 @@ namespace VPContact
 
 
 
+  std::string
+  problem_on_rank_zero(const MPI_Comm               communicator,
+                       const std::function<void()> &task)
+  {
+    std::string problem;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      try
+        {
+          task();
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          problem = Utilities::trim(info.str());
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
+    return Utilities::MPI::broadcast(communicator, problem, 0);
+  }
+
+
+
   void
   write_on_rank_zero(const MPI_Comm               communicator,
                      const std::function<void()> &write)
   {
     // Only rank 0 writes, but every rank must stop if it fails: the others
     // would otherwise wait for it in the next collective call for ever.
-    std::string problem;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      try
-        {
-          write();
-        }
-      catch (const ExceptionBase &e)
-        {
-          std::ostringstream message;
-          e.print_info(message);
-          problem = message.str();
-          while (!problem.empty()
-                 && (problem.back() == '\n' || problem.back() == ' '))
-            problem.pop_back();
-        }
-      catch (const std::exception &e)
-        {
-          problem = e.what();
-        }
-    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    const std::string problem = problem_on_rank_zero(communicator, write);
     AssertThrow(problem.empty(), ExcMessage(problem));
   }
 

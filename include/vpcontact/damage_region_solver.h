@@ -66,7 +66,8 @@ namespace VPContact
      * Solve K_FF x_F = b_F for the free nodes F (the owned positions not in
      * @p held), with x = 0 on the held ones; @p b and @p x (the start
      * vector) must vanish on them. Stops at a residual of @p tolerance
-     * times |b|. Returns the number of iterations, or throws
+     * times |b| (x = 0 without iterations if b = 0). Returns the number of
+     * iterations, or throws
      * SolverControl::NoConvergence after @p max_iterations.
      */
     unsigned int
@@ -76,8 +77,7 @@ namespace VPContact
           const double                         tolerance,
           const unsigned int                   max_iterations);
 
-    /// How often the region was built, and its size the last time (owned
-    /// nodes of this rank), for the performance notes.
+    /// How often the region was built on this rank (for the tests).
     unsigned int
     n_region_builds() const;
 

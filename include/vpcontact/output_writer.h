@@ -120,6 +120,15 @@ namespace VPContact
                         const std::string &content);
 
   /**
+   * Run @p task on rank 0 of @p communicator only and return, on every
+   * rank, the message of what it threw (empty if it did not), so that all
+   * ranks can stop together.
+   */
+  std::string
+  problem_on_rank_zero(const MPI_Comm               communicator,
+                       const std::function<void()> &task);
+
+  /**
    * Call @p write on rank 0 of @p communicator only; if it throws, every
    * rank throws its message, so that a failed write stops the whole run
    * instead of leaving the other ranks waiting for rank 0.

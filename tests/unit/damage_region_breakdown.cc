@@ -3,7 +3,8 @@
 // 3 - 4/3 - 20/3 = -5). The solver must keep the diagonal of the matrix for
 // such a pivot, so that the preconditioner stays SPD and CG converges to the
 // known solution x* = (1, 2, 3, 4), with no node held and with node 1 held
-// (then x_1 = 0 and the others solve the 3 x 3 system of the free nodes).
+// (then x_1 = 0 and the others solve the 3 x 3 system of the free nodes);
+// and for b = 0 it returns x = 0 without iterations.
 #include <vpcontact/damage_region_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -71,4 +72,12 @@ main(int argc, char **argv)
                 << ", CG iterations at most 6: "
                 << (iterations <= 6 ? "yes" : "no") << std::endl;
     }
+
+  // b = 0 from a nonzero start vector: x = 0 at once.
+  TrilinosWrappers::MPI::Vector b(all, comm), x(all, comm);
+  for (unsigned int i = 0; i < 4; ++i)
+    x(i) = 1. + i;
+  const unsigned int iterations = solver.solve(b, x, {}, 1e-12, 100);
+  std::cout << "b = 0: x = 0: " << (x.linfty_norm() == 0. ? "yes" : "no")
+            << ", CG iterations " << iterations << std::endl;
 }
