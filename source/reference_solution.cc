@@ -316,31 +316,41 @@ namespace VPContact
                            const MPI_Comm       communicator)
   {
     // Gather the cells on rank 0, which writes the file and then the index
-    // (both atomically: a reader sees complete snapshots only).
+    // (both atomically: a reader sees complete snapshots only). If rank 0
+    // cannot write, every rank stops with its message instead of waiting for
+    // it in the next collective call.
     const auto pieces = Utilities::MPI::gather(communicator, local.to_bytes());
-    if (Utilities::MPI::this_mpi_process(communicator) != 0)
-      return;
-    Snapshot<dim> all;
-    all.time       = local.time;
-    all.has_damage = local.has_damage;
-    for (unsigned int r = 0; r < pieces.size(); ++r)
-      all.append(Snapshot<dim>::from_bytes(pieces[r], "(rank data)"));
+    write_on_rank_zero(communicator, [&]() {
+      Snapshot<dim> all;
+      all.time       = local.time;
+      all.has_damage = local.has_damage;
+      for (unsigned int r = 0; r < pieces.size(); ++r)
+        all.append(Snapshot<dim>::from_bytes(pieces[r], "(rank data)"));
 
-    if (written.empty())
-      std::filesystem::create_directories(write_folder);
-    const std::string name
-      = "snapshot-" + Utilities::int_to_string(written.size(), 5) + ".bin";
-    const auto bytes = all.to_bytes();
-    write_file_atomically(write_folder + "/" + name,
-                          std::string(bytes.begin(), bytes.end()));
-    written.emplace_back(local.time, name);
+      if (written.empty())
+        {
+          std::error_code error;
+          std::filesystem::create_directories(write_folder, error);
+          AssertThrow(!error,
+                      ExcMessage("Reference solution/Write snapshots: cannot "
+                                 "create the folder "
+                                 + write_folder + " (" + error.message()
+                                 + "). Check Output/Directory."));
+        }
+      const std::string name
+        = "snapshot-" + Utilities::int_to_string(written.size(), 5) + ".bin";
+      const auto bytes = all.to_bytes();
+      write_file_atomically(write_folder + "/" + name,
+                            std::string(bytes.begin(), bytes.end()));
+      written.emplace_back(local.time, name);
 
-    std::ostringstream text;
-    text << "# vpcontact reference: time, snapshot file\n"
-         << std::setprecision(17);
-    for (const auto &[t, file] : written)
-      text << t << ' ' << file << '\n';
-    write_file_atomically(write_folder + "/reference.index", text.str());
+      std::ostringstream text;
+      text << "# vpcontact reference: time, snapshot file\n"
+           << std::setprecision(17);
+      for (const auto &[t, file] : written)
+        text << t << ' ' << file << '\n';
+      write_file_atomically(write_folder + "/reference.index", text.str());
+    });
   }
 
 
