@@ -1,6 +1,5 @@
 // The simulator's assembly: the elastic stiffness matrix (once per mesh) and
 // the right-hand side of a step, which carries the stress history.
-#include <vpcontact/cell_state.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -100,7 +99,8 @@ namespace VPContact
     Vector<double>                                       &cell_vector) const
   {
     // (f_B(t), phi_i) + (f_N(t), phi_i)_{Gamma_N}, at the time last given to
-    // boundary_conditions.set_time(); fe_values is reinitialized on cell.
+    // boundary_conditions.set_time(); fe_values must be reinitialized on
+    // cell if there is a body force (the traction uses fe_face_values).
     // add_load() adds (f, phi_i) at the points of its FEValues, for the
     // body force on the cell and the traction on a face alike; it runs (and
     // allocates its load vector) only where there is a load, since this
@@ -149,39 +149,42 @@ namespace VPContact
     const double k = time_discretization.step_size();
     const bool   evaluate_rate
       = with_viscoplastic_rate && !viscoplastic_law->is_zero();
-    const bool                       with_damage = damage_model.is_active();
-    std::vector<double>              damage_values(quadrature.size(), 1.);
-    AssemblyScratch                  scratch(fe, quadrature);
-    FEValues<dim>                   &fe_values      = scratch.fe_values;
-    FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
-    const FEValuesExtractors::Vector u(0);
-    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
-    Vector<double>                   cell_rhs(dofs_per_cell);
-    FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
+    const bool          with_damage = damage_model.is_active();
+    std::vector<double> damage_values(quadrature.size(), 1.);
+    AssemblyScratch     scratch(fe, quadrature);
+    FEValues<dim>      &fe_values      = scratch.fe_values;
+    FEFaceValues<dim>  &fe_face_values = scratch.fe_face_values;
+    const unsigned int  dofs_per_cell  = fe.n_dofs_per_cell();
+    Vector<double>      cell_rhs(dofs_per_cell);
+    FullMatrix<double>  cell_matrix(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
-    std::vector<double>                  local_solution(dofs_per_cell);
-    const std::vector<unsigned int>      displacement_shape
-      = displacement_shape_functions(fe);
+    std::vector<SymmetricTensor<2, dim>> weighted_predictor(quadrature.size());
+    const double *const                  solution_entries
+      = cell_kinematics.local_entries(solution);
 
-    // The nodal values are read once per cell (see evaluate_cell_state()),
-    // and the loop over i runs over the displacement shape functions only:
-    // this pass visits every cell in every step.
+    // This pass visits every cell in every step: the strains, the damage
+    // and the work of the predictor come from CellKinematics, and an
+    // FEValues is reinitialized only on the cells that carry a load or an
+    // inhomogeneous constraint. Measured on the paper scene at 256^2 cells,
+    // 100 steps: 4.3 s for this pass with an FEValues on every cell, 2.0 s
+    // this way (the stress update: 1.9 s -> 0.74 s); same printed results.
     rhs = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           cell_rhs = 0.;
-          fe_values.reinit(cell);
           if (evaluate_rate || with_damage)
-            evaluate_cell_state(cell,
-                                fe_values,
-                                solution,
-                                local_solution,
-                                strains,
-                                with_damage ? &damage_values : nullptr);
+            cell_kinematics.strains(cell,
+                                    solution_entries,
+                                    make_array_view(strains));
+          if (with_damage)
+            cell_kinematics.damage(cell,
+                                   solution_entries,
+                                   make_array_view(damage_values));
           const auto history = stress_history.get_data(cell);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
+          const auto JxW     = std::as_const(stress_history).JxW(cell);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               auto &point     = history[q];
               point.predictor = point.stress;
@@ -195,23 +198,26 @@ namespace VPContact
                   = damage_model.source().value(strains[q],
                                                 point.stress,
                                                 damage_values[q],
-                                                fe_values.quadrature_point(q),
+                                                cell_kinematics.point(cell, q),
                                                 time - k);
-              const SymmetricTensor<2, dim> weighted_predictor
-                = point.predictor * fe_values.JxW(q);
-              for (const unsigned int i : displacement_shape)
-                cell_rhs(i)
-                  -= weighted_predictor * fe_values[u].symmetric_gradient(i, q);
+              weighted_predictor[q] = point.predictor * JxW[q];
             }
-          add_cell_loads(cell, fe_values, fe_face_values, cell_rhs);
+          cell_kinematics.subtract_stress_work(cell,
+                                               make_array_view(std::as_const(
+                                                 weighted_predictor)),
+                                               cell_rhs);
 
-          // A cell with a prescribed (inhomogeneous) increment moves the
-          // known values to the right-hand side, which needs its matrix;
-          // other cells do not.
+          // Loads and inhomogeneous constraints need the FEValues of the
+          // cell; most cells have neither.
           cell->get_dof_indices(dof_indices);
           bool inhomogeneous = false;
           for (const auto dof : dof_indices)
             inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
+          const bool body_force = boundary_conditions.has_body_force();
+          if (body_force || inhomogeneous)
+            fe_values.reinit(cell);
+          if (body_force || cell->at_boundary())
+            add_cell_loads(cell, fe_values, fe_face_values, cell_rhs);
           if (inhomogeneous)
             {
               elastic_cell_matrix(fe_values, material.stiffness(), cell_matrix);

@@ -178,8 +178,9 @@ namespace VPContact
   {
     // sigma_0 = 0 at every quadrature point of every locally owned cell;
     // compute_initial_state() replaces it where the scene asks for elastic
-    // equilibrium. The JxW of the points are stored with them, once per
-    // mesh (see StressHistory).
+    // equilibrium. The JxW of the points are stored with them, and the
+    // shape gradients in cell_kinematics, once per mesh (see StressHistory
+    // and CellKinematics).
     stress_history.clear();
     FEValues<dim> fe_values(fe, quadrature, update_JxW_values);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -189,6 +190,7 @@ namespace VPContact
           fe_values.reinit(cell);
           stress_history.set_JxW(cell, fe_values.get_JxW_values());
         }
+    cell_kinematics.reinit(dof_handler, quadrature, solution);
   }
 
 

@@ -1,7 +1,6 @@
 // The simulator's stress: the update sigma_n = sigma_{n-1} + k G_{n-1} +
 // E eps(du) at every quadrature point, its safeguards, and the quantities
 // derived from it for output.
-#include <vpcontact/cell_state.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
@@ -18,18 +17,16 @@ namespace VPContact
   {
     TimerOutput::Scope t(computing_timer, "Stress update");
 
-    FEValues<dim>                        fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients
-                              | update_JxW_values);
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<double>                  damage_values(quadrature.size(), 1.);
-    std::vector<double>                  local_increment(fe.n_dofs_per_cell());
-    std::vector<double>                  local_solution(fe.n_dofs_per_cell());
     // Backward Euler solves for the stress again from sigma_{n-1}, with the
     // strain of u_n and the damage zeta_{n-1} (still in the solution).
-    const bool implicit = viscoplasticity.implicit() && n > 0;
+    const bool          implicit = viscoplasticity.implicit() && n > 0;
+    const double *const increment_entries
+      = cell_kinematics.local_entries(increment);
+    const double *const solution_entries
+      = implicit ? cell_kinematics.local_entries(solution) : nullptr;
 
     // The largest stress component, to catch an explicit step that has
     // blown up; NaN compares false and is turned into infinity.
@@ -37,22 +34,21 @@ namespace VPContact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
-          evaluate_cell_state(cell,
-                              fe_values,
-                              increment,
-                              local_increment,
-                              strain_increments);
+          cell_kinematics.strains(cell,
+                                  increment_entries,
+                                  make_array_view(strain_increments));
           if (implicit)
-            evaluate_cell_state(cell,
-                                fe_values,
-                                solution,
-                                local_solution,
-                                strains,
-                                damage_model.is_active() ? &damage_values :
-                                                           nullptr);
+            {
+              cell_kinematics.strains(cell,
+                                      solution_entries,
+                                      make_array_view(strains));
+              if (damage_model.is_active())
+                cell_kinematics.damage(cell,
+                                       solution_entries,
+                                       make_array_view(damage_values));
+            }
           const auto history = stress_history.get_data(cell);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               auto &point = history[q];
               if (implicit)

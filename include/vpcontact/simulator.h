@@ -4,6 +4,7 @@
 #define vpcontact_simulator_h
 
 #include <vpcontact/boundary_conditions.h>
+#include <vpcontact/cell_kinematics.h>
 #include <vpcontact/checkpointing.h>
 #include <vpcontact/convergence_table.h>
 #include <vpcontact/damage_bounds.h>
@@ -323,6 +324,10 @@ namespace VPContact
     std::vector<typename DoFHandler<dim>::active_cell_iterator> contact_cells;
 
     StressHistory<dim> stress_history;
+
+    /// Shape gradients, points and vector positions of every locally owned
+    /// cell, for the passes over all cells in every step (once per mesh).
+    CellKinematics<dim> cell_kinematics;
 
     /// One constant mode per component, for ML (computed once per mesh).
     std::vector<std::vector<bool>> all_constant_modes;
