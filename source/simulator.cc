@@ -332,7 +332,7 @@ namespace VPContact
             = linear_solver.solve(stiffness_matrix, increment_owned, rhs);
           constraints.distribute(increment_owned);
         }
-        increment = increment_owned;
+        increment_exchange.copy(increment_owned, increment);
         if (!friction_active)
           break;
 
@@ -373,7 +373,7 @@ namespace VPContact
     if (with_viscoplastic_rate)
       increment_predictor.record(increment_owned);
     solution_owned += increment_owned;
-    solution = solution_owned;
+    solution_exchange.copy(solution_owned, solution);
   }
 
 

@@ -258,8 +258,8 @@ namespace VPContact
                               + "] (range at the nodes)",
                             "the damage must lie in [0, 1] (1 is sound).");
     damage_system.scatter(damage_owned, solution_owned);
-    solution = solution_owned;
-    damage   = damage_owned;
+    solution_exchange.copy(solution_owned, solution);
+    damage = damage_owned;
   }
 
 
@@ -387,7 +387,7 @@ namespace VPContact
 
     // zeta_{n-1} from the solution, b and b - K zeta_{n-1} of this step.
     damage_system.gather(solution_owned, damage_old);
-    damage = damage_old;
+    damage_exchange.copy(damage_old, damage);
     assemble_damage(false);
     TrilinosWrappers::MPI::Vector step_rhs(damage_old);
     K.vmult(step_rhs, damage_old);
@@ -530,7 +530,7 @@ namespace VPContact
     hanging.distribute(damage_change);
     damage_owned = damage_old;
     damage_owned += damage_change;
-    damage = damage_owned;
+    damage_exchange.copy(damage_owned, damage);
 
     // The multipliers r = b - K zeta (bounds not condensed; hanging nodes
     // carry none) and the next sets.
@@ -571,9 +571,9 @@ namespace VPContact
     // Hanging nodes take the average of their (clipped) parents again.
     damage_system.hanging_node_constraints().distribute(damage_owned);
     last_damage_clip = clip;
-    damage           = damage_owned;
+    damage_exchange.copy(damage_owned, damage);
     damage_system.scatter(damage_owned, solution_owned);
-    solution = solution_owned;
+    solution_exchange.copy(solution_owned, solution);
   }
 
 

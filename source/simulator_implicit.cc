@@ -142,7 +142,7 @@ namespace VPContact
         constraints.distribute(newton_update);
         last_update = newton_update.l2_norm();
         increment_owned += newton_update;
-        increment = increment_owned;
+        increment_exchange.copy(increment_owned, increment);
         if (iteration == 1 && boundary_conditions.has_prescribed_displacement())
           {
             TrilinosWrappers::MPI::Vector total(solution_owned);
@@ -155,7 +155,7 @@ namespace VPContact
           break;
       }
     solution_owned += increment_owned;
-    solution = solution_owned;
+    solution_exchange.copy(solution_owned, solution);
   }
 
 

@@ -13,6 +13,7 @@
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/friction_active_set.h>
 #include <vpcontact/geometry.h>
+#include <vpcontact/ghost_exchange.h>
 #include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
 #include <vpcontact/linear_solver.h>
@@ -313,6 +314,11 @@ namespace VPContact
     /// du = u_n - u_{n-1}: owned part (the solver's vector), ghosted copy.
     TrilinosWrappers::MPI::Vector increment_owned;
     TrilinosWrappers::MPI::Vector increment;
+    /// The copies of the owned vectors into their ghosted ones (see
+    /// GhostExchange), one per pair, each with the import it keeps.
+    GhostExchange solution_exchange;
+    GhostExchange increment_exchange;
+    GhostExchange damage_exchange;
     /// A Newton correction of the implicit step (owned).
     TrilinosWrappers::MPI::Vector newton_update;
 
