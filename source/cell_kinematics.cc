@@ -51,6 +51,7 @@ namespace VPContact
     points.assign(n_cells * n_q_points, Point<dim>());
     positions.assign(n_cells * dofs_per_cell, 0);
     layout = std::make_unique<Epetra_BlockMap>(ghosted.trilinos_vector().Map());
+    equal_layouts.clear();
 
     // The scalar element on the cells of the triangulation: only the
     // geometry is asked for, so no DoFHandler of its own is needed.
@@ -101,9 +102,17 @@ namespace VPContact
     const TrilinosWrappers::MPI::Vector &vector) const
   {
     Assert(layout, ExcMessage("CellKinematics::reinit() was not called."));
-    AssertThrow(vector.trilinos_vector().Map().SameAs(*layout),
+    // A full comparison of two layouts walks every index; it is done once
+    // per vector (per layout data, which a vector keeps until it is
+    // reinitialized), and the layouts found equal are remembered.
+    const Epetra_BlockMap &map = vector.trilinos_vector().Map();
+    for (const auto &known : equal_layouts)
+      if (known.DataPtr() == map.DataPtr())
+        return vector.begin();
+    AssertThrow(map.SameAs(*layout),
                 ExcMessage("CellKinematics: the vector is not in the ghosted "
                            "layout of the current mesh."));
+    equal_layouts.push_back(map);
     return vector.begin();
   }
 

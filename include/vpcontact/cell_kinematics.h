@@ -131,8 +131,10 @@ namespace VPContact
     std::vector<Point<dim>>     points;
     std::vector<unsigned int>   positions;
 
-    /// The layout the positions refer to.
-    std::unique_ptr<Epetra_BlockMap> layout;
+    /// The layout the positions refer to, and copies of the layouts of the
+    /// vectors found equal to it (see local_entries()).
+    std::unique_ptr<Epetra_BlockMap>     layout;
+    mutable std::vector<Epetra_BlockMap> equal_layouts;
   };
 } // namespace VPContact
 

@@ -23,9 +23,9 @@ namespace VPContact
    * lookup each. The simulator copies the displacement and the damage into
    * their ghosted vectors several times per step. Here the import is built
    * once and reused while both vectors keep their layouts (checked on every
-   * call: Epetra compares the shared layout data first, which is immediate
-   * for the same vectors); where the two layouts are the same, the values
-   * are copied directly.
+   * call by the address of the layout data, which a vector keeps until it
+   * is reinitialized; a new address costs one full comparison); where the two
+   * layouts are the same, the values are copied directly.
    */
   class GhostExchange
   {
@@ -35,7 +35,13 @@ namespace VPContact
          TrilinosWrappers::MPI::Vector       &ghosted);
 
   private:
-    std::unique_ptr<Epetra_Import> importer;
+    /// Copies of the two layouts of the last call (they keep the layout
+    /// data alive, so that the same data pointer means the same layout),
+    /// whether they are the same, and the import between them if not.
+    std::unique_ptr<Epetra_BlockMap> source_layout;
+    std::unique_ptr<Epetra_BlockMap> target_layout;
+    bool                             same_layouts = false;
+    std::unique_ptr<Epetra_Import>   importer;
   };
 } // namespace VPContact
 
