@@ -212,21 +212,26 @@ namespace VPContact
 
 
 
-  void
-  DamageRegionSolver::vmult_free(std::vector<double> &dst, const double *src)
+  double
+  DamageRegionSolver::vmult_free(std::vector<double> &dst,
+                                 const double        *src,
+                                 const double        *p)
   {
+    double p_dot_dst = 0;
     for (const unsigned int i : free_nodes)
       {
         double s = 0;
         for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
           s += value[e] * src[column[e]];
         dst[i] = s;
+        p_dot_dst += p[i] * s;
       }
+    return p_dot_dst;
   }
 
 
 
-  void
+  double
   DamageRegionSolver::precondition_free(std::vector<double>       &dst,
                                         const std::vector<double> &src)
   {
@@ -246,8 +251,13 @@ namespace VPContact
         for (unsigned int e = factor_start[k]; e < factor_start[k + 1]; ++e)
           y[factor_column[e]] -= factor_value[e] * y[k];
       }
+    double src_dot_dst = 0;
     for (const unsigned int i : free_nodes)
-      dst[i] = y[region_index[i]];
+      {
+        dst[i] = y[region_index[i]];
+        src_dot_dst += src[i] * dst[i];
+      }
+    return src_dot_dst;
   }
 
 
@@ -284,21 +294,20 @@ namespace VPContact
 
 
 
-  void
+  double
   DamageRegionSolver::multiply_direction()
   {
     // The search direction vanishes off F; on several ranks the products
     // read it in the ghosted layout.
+    const double *p = direction.begin();
     if (serial_layout)
-      vmult_free(product, direction.begin());
-    else
-      {
-        const int error
-          = direction_ghosted.trilinos_vector()
-              .Import(direction.trilinos_vector(), *importer, Insert);
-        AssertThrow(error == 0, ExcTrilinosError(error));
-        vmult_free(product, direction_ghosted.begin());
-      }
+      return global_sum(vmult_free(product, p, p));
+    const int error
+      = direction_ghosted.trilinos_vector().Import(direction.trilinos_vector(),
+                                                   *importer,
+                                                   Insert);
+    AssertThrow(error == 0, ExcTrilinosError(error));
+    return global_sum(vmult_free(product, direction_ghosted.begin(), p));
   }
 
 
@@ -345,7 +354,10 @@ namespace VPContact
     const double target = tolerance * std::sqrt(b_norm2);
 
     // Preconditioned CG on F. NaN compares false: a non-finite residual
-    // ends in NoConvergence, as too many iterations do.
+    // ends in NoConvergence, as too many iterations do. The dot products
+    // are taken in the loops that compute their vectors (the preconditioner,
+    // the product, the update), one pass over F fewer each: the damage
+    // solves are limited by memory traffic.
     double       residual_norm = std::sqrt(dot_free(residual, residual));
     unsigned int iteration     = 0;
     double       rz            = 0;
@@ -356,25 +368,23 @@ namespace VPContact
             clean_up();
             throw SolverControl::NoConvergence(iteration, residual_norm);
           }
-        precondition_free(preconditioned, residual);
-        const double rz_next = dot_free(residual, preconditioned);
-        const double beta    = (iteration == 0 ? 0. : rz_next / rz);
-        rz                   = rz_next;
+        const double rz_next
+          = global_sum(precondition_free(preconditioned, residual));
+        const double beta = (iteration == 0 ? 0. : rz_next / rz);
+        rz                = rz_next;
         for (const unsigned int i : free_nodes)
           p[i] = preconditioned[i] + beta * p[i];
         ++iteration;
 
-        multiply_direction();
-        double pq = 0;
-        for (const unsigned int i : free_nodes)
-          pq += p[i] * product[i];
-        const double alpha = rz / global_sum(pq);
+        const double alpha = rz / multiply_direction();
+        double       rr    = 0;
         for (const unsigned int i : free_nodes)
           {
             x[i] += alpha * p[i];
             residual[i] -= alpha * product[i];
+            rr += residual[i] * residual[i];
           }
-        residual_norm = std::sqrt(dot_free(residual, residual));
+        residual_norm = std::sqrt(global_sum(rr));
       }
     clean_up();
     return iteration;

@@ -94,19 +94,22 @@ namespace VPContact
     void
     factorize_region();
 
-    /// dst = K src on the free rows (src vanishes off F).
-    void
-    vmult_free(std::vector<double> &dst, const double *src);
+    /// dst = K src on the free rows (src vanishes off F); returns the local
+    /// part of p . dst over F for @p p in the owned layout (see solve()).
+    double
+    vmult_free(std::vector<double> &dst, const double *src, const double *p);
 
-    /// dst = IC(K_RR)^{-1} src on F (src vanishes off F; dst is set on F).
-    void
+    /// dst = IC(K_RR)^{-1} src on F (src vanishes off F; dst is set on F);
+    /// returns the local part of src . dst over F.
+    double
     precondition_free(std::vector<double> &dst, const std::vector<double> &src);
 
     double
     dot_free(const std::vector<double> &a, const std::vector<double> &b) const;
 
-    /// product = K direction on F.
-    void
+    /// product = K direction on F; returns direction . product over F, on
+    /// every rank.
+    double
     multiply_direction();
 
     /// Sum over the ranks (none on one).
