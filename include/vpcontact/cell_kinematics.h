@@ -31,8 +31,8 @@ namespace VPContact
    * the simulator's FESystem: dim copies of one scalar element for the
    * displacement, and possibly one more for the damage.
    *
-   * Why: the right-hand side, the stress update and the statistics visit
-   * every cell in every step. With FEValues each visit recomputes the
+   * Why: the right-hand side and the stress update visit every cell in
+   * every step. With FEValues each visit recomputes the
    * mapping (unless the previous cell was a translate of this one), copies
    * the shape data of the FESystem, and reads the cell's values through a
    * global-to-local index lookup per entry. What the visit needs is the
