@@ -38,21 +38,6 @@ namespace VPContact
         for (unsigned int j = i + 1; j < n; ++j)
           cell_matrix(i, j) = cell_matrix(j, i);
     }
-
-
-
-    // The shape functions of @p fe that belong to the displacement (the
-    // others, the damage's, have no strain).
-    template <int dim>
-    std::vector<unsigned int>
-    displacement_shape_functions(const FiniteElement<dim> &fe)
-    {
-      std::vector<unsigned int> shape;
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        if (fe.system_to_component_index(i).first < dim)
-          shape.push_back(i);
-      return shape;
-    }
   } // namespace
 
 
@@ -150,6 +135,7 @@ namespace VPContact
     const bool   evaluate_rate
       = with_viscoplastic_rate && !viscoplastic_law->is_zero();
     const bool          with_damage = damage_model.is_active();
+    const bool          body_force  = boundary_conditions.has_body_force();
     std::vector<double> damage_values(quadrature.size(), 1.);
     AssemblyScratch     scratch(fe, quadrature);
     FEValues<dim>      &fe_values      = scratch.fe_values;
@@ -213,7 +199,6 @@ namespace VPContact
           bool inhomogeneous = false;
           for (const auto dof : dof_indices)
             inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
-          const bool body_force = boundary_conditions.has_body_force();
           if (body_force || inhomogeneous)
             fe_values.reinit(cell);
           if (body_force || cell->at_boundary())

@@ -88,7 +88,7 @@ namespace
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
         A[i][j] = AffineField<dim>::A(i, j);
-    const SymmetricTensor<2, dim> sym_A = symmetrize(A);
+    const SymmetricTensor<2, dim>        sym_A = symmetrize(A);
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<double>                  damage(quadrature.size());
     double                               strain_error = 0, damage_error = 0;
