@@ -167,6 +167,24 @@ namespace VPContact
 
   template <int dim>
   void
+  CellKinematics<dim>::nodal_values(const cell_iterator &cell,
+                                    const double        *entries,
+                                    const unsigned int   component,
+                                    ArrayView<double>  &&values) const
+  {
+    AssertDimension(values.size(), n_nodes);
+    AssertIndexRange(component, dofs_per_cell / n_nodes);
+    const unsigned int *dofs
+      = &positions[cell->active_cell_index() * dofs_per_cell];
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      if (component_of[i] == component)
+        values[node_of[i]] = entries[dofs[i]];
+  }
+
+
+
+  template <int dim>
+  void
   CellKinematics<dim>::subtract_stress_work(
     const cell_iterator                           &cell,
     const ArrayView<const SymmetricTensor<2, dim>> weighted_stress,

@@ -214,27 +214,39 @@ namespace VPContact
         }
     };
 
-    if (!checkpointing.resume())
-      {
-        compute_initial_state();
-        finish_step(0, 0.);
-      }
     // From here on SIGINT/SIGTERM/SIGUSR1 stop a single run at the end of a
     // step, with a checkpoint (runs with cycles are not checkpointed).
     const auto signal_catcher
       = (checkpointing.stops_on_signal() && mesh_refinement.n_cycles() == 1 ?
            std::make_unique<StopSignalCatcher>() :
            nullptr);
-    for (unsigned int n = first_step; n <= time_discretization.n_steps(); ++n)
+    try
       {
-        Timer step_timer;
-        solve_step(n);
-        step_timer.stop();
-        finish_step(n, step_timer.wall_time());
-        if (signal_catcher || checkpointing.writes_periodically())
-          if (checkpoint_after_step(n))
-            return;
+        if (!checkpointing.resume())
+          {
+            compute_initial_state();
+            finish_step(0, 0.);
+          }
+        for (unsigned int n = first_step; n <= time_discretization.n_steps();
+             ++n)
+          {
+            Timer step_timer;
+            solve_step(n);
+            step_timer.stop();
+            finish_step(n, step_timer.wall_time());
+            if (signal_catcher || checkpointing.writes_periodically())
+              if (checkpoint_after_step(n))
+                return;
+          }
       }
+    catch (...)
+      {
+        // The fields written before the error stay readable: the piece
+        // being written in the background is finished and recorded.
+        output_writer.finish_field_output_after_error();
+        throw;
+      }
+    output_writer.finish_field_output(mpi_communicator);
     print_summary();
     if (output_writer.report_solve_floor())
       report_solve_floor();

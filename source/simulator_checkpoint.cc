@@ -77,8 +77,10 @@ namespace VPContact
     metadata.n_active_cells = triangulation.n_global_active_cells();
     metadata.n_dofs         = dof_handler.n_dofs();
     metadata.statistics_csv = statistics.to_csv();
-    metadata.field_outputs  = output_writer.field_outputs();
-    metadata.counters       = verification.running_maxima();
+    // The checkpoint lists the field outputs on disk: the last one must be.
+    output_writer.finish_field_output(mpi_communicator);
+    metadata.field_outputs                      = output_writer.field_outputs();
+    metadata.counters                           = verification.running_maxima();
     metadata.counters["max_friction_violation"] = max_friction_violation;
     metadata.counters["max_damage_violation"]   = max_damage_violation;
     metadata.counters["damage_rings_ahead"]     = damage_rings_ahead;

@@ -587,29 +587,20 @@ namespace VPContact
     const auto [lowest, highest] = damage_range(damage_owned);
     const double violation       = std::max({0., -lowest, highest - 1.});
 
-    // zeta at the quadrature points from its nodal values (the ghosted
-    // compact vector damage) and the shape values on the reference cell
-    // (see reference_shape_values()); JxW as stored with the stress history.
-    const auto              &shape = damage_system.shape_functions();
-    const FullMatrix<double> psi
-      = reference_shape_values(fe, shape, quadrature);
-    std::vector<types::global_dof_index> dof_indices;
-    std::vector<double>                  nodal(shape.size());
-    double                               damaged = 0, volume = 0;
+    // zeta at the quadrature points from the damage component of the
+    // solution (CellKinematics); JxW as stored with the stress history.
+    const double *const entries = cell_kinematics.local_entries(solution);
+    std::vector<double> values(quadrature.size());
+    double              damaged = 0, volume = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const auto JxW = stress_history.JxW(cell);
-          damage_system.dof_indices(cell, dof_indices);
-          for (unsigned int a = 0; a < shape.size(); ++a)
-            nodal[a] = damage(dof_indices[a]);
+          cell_kinematics.damage(cell, entries, make_array_view(values));
           for (unsigned int q = 0; q < JxW.size(); ++q)
             {
-              double value = 0;
-              for (unsigned int a = 0; a < shape.size(); ++a)
-                value += psi(q, a) * nodal[a];
               volume += JxW[q];
-              if (value < 1. - 1e-12)
+              if (values[q] < 1. - 1e-12)
                 damaged += JxW[q];
             }
         }

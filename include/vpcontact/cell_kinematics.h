@@ -62,6 +62,13 @@ namespace VPContact
            const Quadrature<dim>               &quadrature,
            const TrilinosWrappers::MPI::Vector &ghosted);
 
+    /// The number of nodes (scalar shape functions) of a cell.
+    unsigned int
+    nodes_per_cell() const
+    {
+      return n_nodes;
+    }
+
     /// Whether the element has a damage component (component dim).
     bool
     has_damage() const;
@@ -85,6 +92,17 @@ namespace VPContact
     damage(const cell_iterator &cell,
            const double        *entries,
            ArrayView<double>  &&damage) const;
+
+    /**
+     * Component @p component of @p entries at the nodes of @p cell (for
+     * Q1, its vertices), in the order of the scalar element's shape
+     * functions.
+     */
+    void
+    nodal_values(const cell_iterator &cell,
+                 const double        *entries,
+                 const unsigned int   component,
+                 ArrayView<double>  &&values) const;
 
     /**
      * cell_vector(i) -= sum_q tau_q : eps(phi_i) over the displacement

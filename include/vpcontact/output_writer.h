@@ -3,6 +3,7 @@
 #ifndef vpcontact_output_writer_h
 #define vpcontact_output_writer_h
 
+#include <vpcontact/field_writer.h>
 #include <vpcontact/statistics.h>
 
 #include <deal.II/base/mpi.h>
@@ -10,6 +11,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +27,12 @@ namespace VPContact
    * statistics.csv) are rewritten after every step through a temporary file
    * and a rename, so that a run that stops (an error, a kill) leaves them
    * complete up to the last finished step, never half-written.
+   *
+   * The .vtu pieces of a field output are compressed and written by a
+   * FieldWriter, by default in a second thread while the next steps are
+   * computed. The .pvtu and .pvd records name a field output only once
+   * every rank's piece is on disk: when the next field output starts, and
+   * in finish_field_output().
    */
   template <int dim>
   class OutputWriter
@@ -47,12 +55,34 @@ namespace VPContact
     bool
     writes_fields_at(const unsigned int n, const unsigned int n_steps) const;
 
-    /// Write the fields of @p data_out (patches built) for step @p n.
+    /**
+     * Write the fields of @p data_out (patches built, and taken from it)
+     * for step @p n: this rank's .vtu piece, in the background if so
+     * chosen. The field output before it is finished first.
+     */
     void
-    write_fields(const DataOut<dim> &data_out,
-                 const unsigned int  n,
-                 const double        time,
-                 const MPI_Comm      communicator);
+    write_fields(DetachableDataOut<dim> &data_out,
+                 const unsigned int      n,
+                 const double            time,
+                 const MPI_Comm          communicator);
+
+    /**
+     * Wait for the pieces of the last field output on every rank, then
+     * write its .pvtu record and the .pvd record (rank 0). Collective;
+     * throws on every rank if a piece could not be written on any. Called
+     * at the end of a run and before a checkpoint.
+     */
+    void
+    finish_field_output(const MPI_Comm communicator);
+
+    /**
+     * The same after an error stopped the run, without talking to the
+     * other ranks (they may not be here): wait for this rank's piece and,
+     * on rank 0, if it is on disk, add the output to the records. Never
+     * throws.
+     */
+    void
+    finish_field_output_after_error() noexcept;
 
     /// Rewrite statistics.csv (rank 0 writes).
     void
@@ -100,11 +130,39 @@ namespace VPContact
     void
     write_pvd_record(const MPI_Comm communicator) const;
 
+    /// A field output whose pieces are being written: what its .pvtu and
+    /// .pvd records need.
+    struct PendingOutput
+    {
+      unsigned int             rank;
+      double                   time;
+      std::string              pvtu;
+      std::vector<std::string> pieces;
+      std::vector<std::string> names;
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+        vector_ranges;
+    };
+
+    /// Write the .pvtu record of @p output (rank 0 calls this).
+    void
+    write_pvtu_record(const PendingOutput &output) const;
+
     std::string  output_directory    = "results";
     std::string  base_directory_name = "results";
     unsigned int output_every        = 10;
     bool         deterministic       = false;
     bool         solve_floor         = false;
+    bool         in_background       = true;
+
+    /// The flags of every .vtu and .pvtu file.
+    DataOutBase::VtkFlags vtk_flags;
+
+    FieldWriter<dim>             field_writer;
+    std::optional<PendingOutput> pending_output;
 
     /// (time, .pvtu file) of every field output so far, for the .pvd record.
     std::vector<std::pair<double, std::string>> times_and_names;

@@ -1,9 +1,12 @@
-// A write that fails on rank 0 in the middle of a run must stop every rank
+// A write that fails on one rank in the middle of a run must stop every rank
 // with its message: rank 0 alone writes statistics.csv and the reference
 // snapshots, and if only rank 0 stopped, the other ranks would wait for it in
-// their next collective call for ever (the test would then time out). Each
-// write is made to fail with a folder in the way of its temporary file (as
-// root, permissions would not stop it). Serial and on 2 ranks.
+// their next collective call for ever (the test would then time out). The
+// same for the .vtu piece of the last rank, which is written in the
+// background: its failure is found when the output is finished, and must
+// reach every rank. Each write is made to fail with a folder in the way of
+// its temporary file (as root, permissions would not stop it). Serial and on
+// 2 ranks.
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
@@ -74,4 +77,10 @@ main(int argc, char **argv)
   check_stops_every_rank("run_reference",
                          "reference/snapshot-00000.bin.tmp",
                          true);
+  const unsigned int last_rank
+    = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) - 1;
+  check_stops_every_rank("run_fields",
+                         "solution_00005." + std::to_string(last_rank)
+                           + ".vtu.tmp",
+                         false);
 }

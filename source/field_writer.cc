@@ -1,0 +1,107 @@
+// FieldWriter: the .vtu piece of a field output, compressed and written in a
+// second thread or at once.
+#include <vpcontact/field_writer.h>
+#include <vpcontact/output_writer.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <sstream>
+#include <utility>
+
+namespace VPContact
+{
+  template <int dim>
+  FieldPatches<dim>
+  DetachableDataOut<dim>::take_patches()
+  {
+    FieldPatches<dim> fields;
+    fields.patches       = std::move(this->patches);
+    fields.names         = this->get_dataset_names();
+    fields.vector_ranges = this->get_nonscalar_data_ranges();
+    this->patches.clear();
+    return fields;
+  }
+
+
+
+  template <int dim>
+  FieldWriter<dim>::~FieldWriter()
+  {
+    // A run that stops with an error leaves its last piece whole: wait
+    // for it. What went wrong with it no longer matters then.
+    if (write.valid())
+      write.wait();
+  }
+
+
+
+  template <int dim>
+  void
+  FieldWriter<dim>::start(FieldPatches<dim>          &&fields,
+                          const std::string           &filename,
+                          const DataOutBase::VtkFlags &flags,
+                          const bool                   in_background)
+  {
+    Assert(!pending(), ExcMessage("wait() for the previous write first"));
+    // The task owns the patches; the file is written only once the whole
+    // piece is in memory.
+    auto task = [fields = std::move(fields), filename, flags]() {
+      std::ostringstream vtu;
+      DataOutBase::write_vtu(fields.patches,
+                             fields.names,
+                             fields.vector_ranges,
+                             flags,
+                             vtu);
+      write_file_atomically(filename, vtu.str());
+    };
+    // A deferred task runs in wait(), in this thread: the same path, and
+    // the same way of reporting a failure, as in the background.
+    write
+      = std::async(in_background ? std::launch::async : std::launch::deferred,
+                   std::move(task));
+    if (!in_background)
+      write.wait();
+  }
+
+
+
+  template <int dim>
+  bool
+  FieldWriter<dim>::pending() const
+  {
+    return write.valid();
+  }
+
+
+
+  template <int dim>
+  std::string
+  FieldWriter<dim>::wait()
+  {
+    if (!write.valid())
+      return "";
+    try
+      {
+        write.get();
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        return Utilities::trim(info.str());
+      }
+    catch (const std::exception &e)
+      {
+        return e.what();
+      }
+    return "";
+  }
+
+
+
+  template class DetachableDataOut<2>;
+  template class DetachableDataOut<3>;
+  template class FieldWriter<2>;
+  template class FieldWriter<3>;
+} // namespace VPContact
