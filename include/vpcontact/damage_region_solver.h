@@ -91,6 +91,10 @@ namespace VPContact
     void
     build_region(const unsigned int rings);
 
+    /// Renumber R level by level, for the triangular sweeps.
+    void
+    order_by_levels();
+
     void
     factorize_region();
 
@@ -135,14 +139,19 @@ namespace VPContact
     std::vector<bool>         is_free;
     std::vector<unsigned int> free_nodes;
 
-    // The region R (ascending owned positions), each owned position's index
-    // in it (or -1), and the IC(0) factor L of K_RR (L L^T ~ K_RR): the
-    // strictly lower part in CSR over region indices, and the diagonal.
+    // The region R (owned positions, level by level; see
+    // order_by_levels()), each owned position's index in it (or -1), and
+    // the IC(0) factor L of K_RR (L L^T ~ K_RR): the strictly lower part in
+    // CSR over region indices, the same transposed (the strictly upper
+    // part of L^T), and the diagonal.
     std::vector<unsigned int> region;
     std::vector<int>          region_index;
     std::vector<unsigned int> factor_start;
     std::vector<unsigned int> factor_column;
     std::vector<double>       factor_value;
+    std::vector<unsigned int> upper_start;
+    std::vector<unsigned int> upper_column;
+    std::vector<double>       upper_value;
     std::vector<double>       factor_diagonal;
     std::vector<double>       inverse_diagonal;
     bool                      region_valid = false;
