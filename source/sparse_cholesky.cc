@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
 #include <algorithm>
 #include <string>
 #include <utility>
@@ -25,6 +26,14 @@ namespace VPContact
       const long                           n = epetra.NumMyRows();
       std::vector<long>                    column_start(n + 1, 0);
       std::vector<std::pair<long, double>> entries;
+      // Room for the upper triangle and the diagonal at once, and the
+      // global index of every column looked up once: at 790k unknowns the
+      // growing vector and a GCID() per entry took 0.7 s of the 7 s.
+      entries.reserve((epetra.NumMyNonzeros() + n) / 2);
+      const Epetra_Map &column_map = epetra.ColMap();
+      std::vector<long> global_column(column_map.NumMyElements());
+      for (std::size_t c = 0; c < global_column.size(); ++c)
+        global_column[c] = column_map.GID64(c);
       for (long row = 0; row < n; ++row)
         {
           int     length;
@@ -34,7 +43,7 @@ namespace VPContact
           const auto first = entries.size();
           for (int j = 0; j < length; ++j)
             {
-              const long column = epetra.GCID(columns[j]);
+              const long column = global_column[columns[j]];
               if (column >= row)
                 entries.emplace_back(column, values[j]);
             }
