@@ -132,6 +132,7 @@ namespace VPContact
       }
 
     rhs.reinit(locally_owned_dofs, mpi_communicator);
+    find_plain_rhs_cells();
     solution_owned.reinit(locally_owned_dofs, mpi_communicator);
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
@@ -168,6 +169,59 @@ namespace VPContact
         if (!constraints.is_constrained(dof))
           constraints.add_line(dof);
     constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::find_plain_rhs_cells()
+  {
+    // assemble_rhs() visits every cell in every step, and on most cells
+    // AffineConstraints::distribute_local_to_global() only looks up that
+    // no degree of freedom is constrained and adds by global index. On the
+    // cells found here the right-hand side is added by position instead.
+    // Every constraint that changes in time (Dirichlet, prescribed
+    // displacement, contact, stick) sits on the boundary, and the hanging
+    // node constraints are those of the mesh, in the constraints now, so a
+    // cell with no displacement degree of freedom on the boundary or
+    // constrained now stays plain while the mesh does. The damage degrees
+    // of freedom are all constrained in this system and take nothing.
+    // (Q1: the degrees of freedom sit at the vertices.)
+    std::vector<bool> on_boundary(triangulation.n_vertices(), false);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            for (const unsigned int v : face->vertex_indices())
+              on_boundary[face->vertex_index(v)] = true;
+
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int invalid       = numbers::invalid_unsigned_int;
+    plain_rhs_cell.assign(triangulation.n_active_cells(), false);
+    plain_rhs_positions.assign(triangulation.n_active_cells() * dofs_per_cell,
+                               invalid);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          bool plain = true;
+          for (const unsigned int v : cell->vertex_indices())
+            plain = plain && !on_boundary[cell->vertex_index(v)];
+          cell->get_dof_indices(dof_indices);
+          const unsigned int c = cell->active_cell_index();
+          for (unsigned int i = 0; i < dofs_per_cell && plain; ++i)
+            if (fe.system_to_component_index(i).first < dim)
+              {
+                const auto dof = dof_indices[i];
+                plain          = locally_owned_dofs.is_element(dof)
+                        && !constraints.is_constrained(dof);
+                if (plain)
+                  plain_rhs_positions[c * dofs_per_cell + i]
+                    = locally_owned_dofs.index_within_set(dof);
+              }
+          plain_rhs_cell[c] = plain;
+        }
   }
 
 

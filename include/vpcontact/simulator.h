@@ -167,6 +167,8 @@ namespace VPContact
                      const TrilinosWrappers::MPI::Vector *previous);
     void
     setup_stress_history();
+    void
+    find_plain_rhs_cells();
 
     // simulator_assembly.cc
     void
@@ -328,6 +330,14 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector residual;
     /// The locally owned cells with a contact node, where r is assembled.
     std::vector<typename DoFHandler<dim>::active_cell_iterator> contact_cells;
+
+    /// For each locally owned cell (by active cell index) whose
+    /// displacement degrees of freedom are all owned, off the boundary and
+    /// unconstrained: their positions in the local storage of rhs (dofs
+    /// per cell of them; an invalid position for the damage ones). Empty
+    /// for the other cells. See find_plain_rhs_cells().
+    std::vector<unsigned int> plain_rhs_positions;
+    std::vector<bool>         plain_rhs_cell;
 
     StressHistory<dim> stress_history;
 
