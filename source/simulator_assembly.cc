@@ -138,12 +138,8 @@ namespace VPContact
     const bool          body_force  = boundary_conditions.has_body_force();
     std::vector<double> damage_values(quadrature.size(), 1.);
     AssemblyScratch     scratch(fe, quadrature);
-    FEValues<dim>      &fe_values      = scratch.fe_values;
-    FEFaceValues<dim>  &fe_face_values = scratch.fe_face_values;
-    const unsigned int  dofs_per_cell  = fe.n_dofs_per_cell();
+    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
     Vector<double>      cell_rhs(dofs_per_cell);
-    FullMatrix<double>  cell_matrix(dofs_per_cell, dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> weighted_predictor(quadrature.size());
     const double *const                  solution_entries
@@ -204,31 +200,47 @@ namespace VPContact
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 if (position[i] != numbers::invalid_unsigned_int)
                   rhs_entries[position[i]] += cell_rhs(i);
-              continue;
-            }
-
-          // Loads and inhomogeneous constraints need the FEValues of the
-          // cell; most cells have neither.
-          cell->get_dof_indices(dof_indices);
-          bool inhomogeneous = false;
-          for (const auto dof : dof_indices)
-            inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
-          if (body_force || inhomogeneous)
-            fe_values.reinit(cell);
-          if (body_force || cell->at_boundary())
-            add_cell_loads(cell, fe_values, fe_face_values, cell_rhs);
-          if (inhomogeneous)
-            {
-              elastic_cell_matrix(fe_values, material.stiffness(), cell_matrix);
-              constraints.distribute_local_to_global(cell_rhs,
-                                                     dof_indices,
-                                                     rhs,
-                                                     cell_matrix);
             }
           else
-            constraints.distribute_local_to_global(cell_rhs, dof_indices, rhs);
+            add_cell_rhs(cell, body_force, scratch, cell_rhs);
         }
     rhs.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_cell_rhs(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const bool                                            body_force,
+    AssemblyScratch                                      &scratch,
+    Vector<double>                                       &cell_rhs)
+  {
+    // A cell with a load or a constraint: the loads and inhomogeneous
+    // constraints need the FEValues of the cell, and the constraints
+    // decide where its entries go.
+    auto &dof_indices = scratch.dof_indices;
+    cell->get_dof_indices(dof_indices);
+    bool inhomogeneous = false;
+    for (const auto dof : dof_indices)
+      inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
+    if (body_force || inhomogeneous)
+      scratch.fe_values.reinit(cell);
+    if (body_force || cell->at_boundary())
+      add_cell_loads(cell, scratch.fe_values, scratch.fe_face_values, cell_rhs);
+    if (inhomogeneous)
+      {
+        elastic_cell_matrix(scratch.fe_values,
+                            material.stiffness(),
+                            scratch.cell_matrix);
+        constraints.distribute_local_to_global(cell_rhs,
+                                               dof_indices,
+                                               rhs,
+                                               scratch.cell_matrix);
+      }
+    else
+      constraints.distribute_local_to_global(cell_rhs, dof_indices, rhs);
   }
 
 

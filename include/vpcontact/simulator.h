@@ -122,9 +122,14 @@ namespace VPContact
                          QGauss<dim - 1>(fe.degree + 1),
                          update_values | update_quadrature_points
                            | update_JxW_values)
+        , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+        , dof_indices(fe.n_dofs_per_cell())
       {}
       FEValues<dim>     fe_values;
       FEFaceValues<dim> fe_face_values;
+      /// For the cells with an inhomogeneous constraint.
+      FullMatrix<double>                   cell_matrix;
+      std::vector<types::global_dof_index> dof_indices;
     };
 
     // simulator.cc
@@ -182,6 +187,11 @@ namespace VPContact
                    const FEValues<dim> &fe_values,
                    FEFaceValues<dim>   &fe_face_values,
                    Vector<double>      &cell_vector) const;
+    void
+    add_cell_rhs(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                 const bool       body_force,
+                 AssemblyScratch &scratch,
+                 Vector<double>  &cell_rhs);
 
     // simulator_implicit.cc
     void
