@@ -15,6 +15,14 @@ namespace VPContact
 {
   using namespace dealii;
 
+  /// Which fields form vectors: (first, last, name, interpretation), as
+  /// deal.II's DataOutInterface::get_nonscalar_data_ranges() gives them.
+  using VectorRanges = std::vector<
+    std::tuple<unsigned int,
+               unsigned int,
+               std::string,
+               DataComponentInterpretation::DataComponentInterpretation>>;
+
   /**
    * The patches of one field output and the names of its fields, taken out
    * of the DataOut that built them: what a .vtu file is made of, without
@@ -26,12 +34,7 @@ namespace VPContact
   {
     std::vector<DataOutBase::Patch<dim, dim>> patches;
     std::vector<std::string>                  names;
-    std::vector<
-      std::tuple<unsigned int,
-                 unsigned int,
-                 std::string,
-                 DataComponentInterpretation::DataComponentInterpretation>>
-      vector_ranges;
+    VectorRanges                              vector_ranges;
   };
 
   /**

@@ -139,12 +139,7 @@ namespace VPContact
       std::string              pvtu;
       std::vector<std::string> pieces;
       std::vector<std::string> names;
-      std::vector<
-        std::tuple<unsigned int,
-                   unsigned int,
-                   std::string,
-                   DataComponentInterpretation::DataComponentInterpretation>>
-        vector_ranges;
+      VectorRanges             vector_ranges;
     };
 
     /// Write the .pvtu record of @p output (rank 0 calls this).
