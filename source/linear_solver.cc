@@ -6,8 +6,34 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <thread>
+
+#ifdef __linux__
+#  include <sched.h>
+#endif
+
 namespace VPContact
 {
+  namespace
+  {
+    // The cores this process may run on: its CPU affinity where the system
+    // tells it (mpirun binds each rank to a core by default), else the
+    // machine's.
+    unsigned int
+    available_cores()
+    {
+#ifdef __linux__
+      cpu_set_t set;
+      CPU_ZERO(&set);
+      if (sched_getaffinity(0, sizeof(set), &set) == 0)
+        return CPU_COUNT(&set);
+#endif
+      return std::thread::hardware_concurrency();
+    }
+  } // namespace
+
+
+
   void
   LinearSolver::declare_parameters(ParameterHandler &prm)
   {
@@ -30,6 +56,16 @@ namespace VPContact
                         "factorization on one process; see "
                         "doc/performance.md. Direct factorizations are "
                         "recomputed whenever the stick set changes.");
+      prm.declare_entry(
+        "Solve in background",
+        "true",
+        Patterns::Bool(),
+        "With Linear solver = Cholesky and at least two cores available to "
+        "the process: solve with the factors in a second thread while the "
+        "damage step of the time step runs (both use only data of the "
+        "previous step; the results are the same bits). false: one after "
+        "the other. Ignored for the other solvers, whose solves "
+        "communicate.");
       prm.declare_entry("Relative tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
@@ -57,6 +93,9 @@ namespace VPContact
     direct_package     = (method == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
     relative_tolerance = prm.get_double("Relative tolerance");
     max_iterations     = prm.get_integer("Maximum linear iterations");
+    in_background      = prm.get_bool("Solve in background")
+                    && solver_method == Method::cholesky
+                    && available_cores() >= 2;
     prm.leave_subsection();
     VPContactCheckParameter(relative_tolerance > 0,
                             "Solver/Relative tolerance",
@@ -129,11 +168,7 @@ namespace VPContact
                       TrilinosWrappers::MPI::Vector        &x,
                       const TrilinosWrappers::MPI::Vector  &b)
   {
-    const double b_norm = b.l2_norm();
-    AssertThrow(std::isfinite(b_norm),
-                ExcMessage("The right-hand side of the displacement system "
-                           "is not finite (NaN or Inf). Check the load "
-                           "expressions in 'Boundary conditions'."));
+    const double b_norm = checked_norm(b);
     if (b_norm == 0.)
       {
         x = 0.;
@@ -174,6 +209,51 @@ namespace VPContact
               "direct on small meshes."));
       }
     return control.last_step();
+  }
+
+
+
+  double
+  LinearSolver::checked_norm(const TrilinosWrappers::MPI::Vector &b)
+  {
+    const double b_norm = b.l2_norm();
+    AssertThrow(std::isfinite(b_norm),
+                ExcMessage("The right-hand side of the displacement system "
+                           "is not finite (NaN or Inf). Check the load "
+                           "expressions in 'Boundary conditions'."));
+    return b_norm;
+  }
+
+
+
+  bool
+  LinearSolver::solves_in_background() const
+  {
+    return in_background;
+  }
+
+
+
+  std::future<unsigned int>
+  LinearSolver::solve_in_background(TrilinosWrappers::MPI::Vector       &x,
+                                    const TrilinosWrappers::MPI::Vector &b)
+  {
+    Assert(in_background, ExcInternalError());
+    // The norm is a reduction over the ranks: taken here, in the calling
+    // thread. Exceptions of the second thread reach the caller from get();
+    // should the caller leave by an exception first, the future's
+    // destructor waits for the thread.
+    std::promise<unsigned int> done;
+    if (checked_norm(b) == 0.)
+      {
+        x = 0.;
+        done.set_value(0);
+        return done.get_future();
+      }
+    return std::async(std::launch::async, [this, &x, &b]() {
+      cholesky->solve(x, b);
+      return 1u;
+    });
   }
 
 

@@ -287,16 +287,28 @@ namespace VPContact
   void
   Simulator<dim>::solve_step(const unsigned int n)
   {
-    // Steps 1-3 of the scheme (predictor, displacement, stress), then step
-    // 4 (damage), which uses only data of step n-1: the source phi_{n-1}
-    // stored by the assembly of step 2, and zeta_{n-1}.
+    // Steps 1-3 of the scheme (predictor, displacement, stress) and step 4
+    // (damage). The damage step uses only data of step n-1: the source
+    // phi_{n-1} stored by the assembly of step 2, and zeta_{n-1}. It
+    // therefore runs beside the first linear solve of the displacement
+    // step, in the same thread or, with the Cholesky factors, while they
+    // solve in a second one (see solve_increment()). zeta_n enters the
+    // solution only after the stress update, which still reads zeta_{n-1}.
+    const bool                  damage      = damage_model.is_active();
+    const std::function<void()> damage_step = [this, n]() { solve_damage(n); };
     if (viscoplasticity.implicit())
-      solve_increment_implicit(time_discretization.time(n));
+      {
+        solve_increment_implicit(time_discretization.time(n));
+        if (damage)
+          damage_step();
+      }
     else
-      solve_increment(time_discretization.time(n), true);
+      solve_increment(time_discretization.time(n),
+                      true,
+                      damage ? damage_step : std::function<void()>());
     update_stress(n);
-    if (damage_model.is_active())
-      solve_damage(n);
+    if (damage)
+      store_damage(n);
   }
 
 
@@ -314,7 +326,8 @@ namespace VPContact
   template <int dim>
   void
   Simulator<dim>::solve_increment(const double time,
-                                  const bool   with_viscoplastic_rate)
+                                  const bool   with_viscoplastic_rate,
+                                  const std::function<void()> &beside)
   {
     if (friction_active)
       friction_active_set.set_bounds(friction, time);
@@ -339,9 +352,24 @@ namespace VPContact
         if (friction_active)
           friction_active_set.add_slip_forces(constraints, rhs);
         {
+          // The work beside the solve (the damage step) runs in the first
+          // iteration. When the factors can solve in a second thread it
+          // runs while they do, and "Solve" times only what it does not
+          // hide; the second thread touches only the increment and the
+          // right-hand side, which the damage step does not.
+          std::future<unsigned int> solving;
+          if (iteration == 1 && beside)
+            {
+              if (linear_solver.solves_in_background())
+                solving
+                  = linear_solver.solve_in_background(increment_owned, rhs);
+              beside();
+            }
           TimerOutput::Scope t(computing_timer, "Solve");
           last_linear_iterations
-            = linear_solver.solve(stiffness_matrix, increment_owned, rhs);
+            = solving.valid() ?
+                solving.get() :
+                linear_solver.solve(stiffness_matrix, increment_owned, rhs);
           constraints.distribute(increment_owned);
         }
         increment_exchange.copy(increment_owned, increment);

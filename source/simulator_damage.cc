@@ -380,7 +380,12 @@ namespace VPContact
     // the linear solves is the change zeta - zeta_{n-1}: its right-hand
     // side F - kappa A zeta_{n-1} is small where little happens, so the
     // relative tolerance of CG measures what changes, not the mass term
-    // M zeta_{n-1}/k.
+    // M zeta_{n-1}/k. zeta_n is left in damage_owned (and damage):
+    // store_damage() puts it into the solution after the stress update.
+    // This function reads of the displacement step only the damage source
+    // and the solution (zeta_{n-1}), and writes only the damage vectors: it
+    // may run while the displacement system is solved (see
+    // Simulator::solve_step()).
     last_damage_iterations                  = 0;
     damage_change                           = 0.;
     const TrilinosWrappers::SparseMatrix &K = damage_system.matrix();
@@ -432,7 +437,6 @@ namespace VPContact
 
     damage_rings_ahead
       = static_cast<unsigned int>(std::floor(damage_bounds.rings_moved()));
-    store_damage(n);
   }
 
 

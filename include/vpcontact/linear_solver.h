@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <future>
 #include <memory>
 #include <string>
 #include <vector>
@@ -70,6 +71,27 @@ namespace VPContact
           TrilinosWrappers::MPI::Vector        &x,
           const TrilinosWrappers::MPI::Vector  &b);
 
+    /**
+     * Whether solve_in_background() runs the solve on a core of its own:
+     * with the Cholesky factors, Solver/Solve in background = true and at
+     * least two cores available to this process.
+     */
+    bool
+    solves_in_background() const;
+
+    /**
+     * As solve(), with the triangular solves of the Cholesky factors in a
+     * second thread; the result is in @p x once get() of the returned
+     * future returns. That thread touches nothing but @p x, @p b and the
+     * factors, and calls no MPI function (MPI is initialized for one
+     * calling thread at a time): until get(), the caller may do anything
+     * else, but must leave @p x and @p b alone. Only if
+     * solves_in_background().
+     */
+    std::future<unsigned int>
+    solve_in_background(TrilinosWrappers::MPI::Vector       &x,
+                        const TrilinosWrappers::MPI::Vector &b);
+
     /// One application of the preconditioner (AMG V-cycle) or, for the
     /// direct solvers, one solve with the factors: dst = P^{-1} src.
     void
@@ -86,7 +108,13 @@ namespace VPContact
     iteration_limit() const;
 
   private:
+    /// |b|, checked to be finite.
+    static double
+    checked_norm(const TrilinosWrappers::MPI::Vector &b);
+
     Method solver_method = Method::cg_amg;
+    /// See solves_in_background().
+    bool in_background = false;
     /// The Amesos package of the direct method: Amesos_Klu or Amesos_Mumps.
     std::string  direct_package     = "Amesos_Klu";
     double       relative_tolerance = 1e-10;

@@ -40,6 +40,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <string>
 
 namespace VPContact
@@ -139,8 +140,12 @@ namespace VPContact
     compute_initial_state();
     void
     solve_step(const unsigned int n);
+    /// The displacement increment of the step at @p time; @p beside (the
+    /// damage step, if given) runs once, beside the first linear solve.
     void
-    solve_increment(const double time, const bool with_viscoplastic_rate);
+    solve_increment(const double                 time,
+                    const bool                   with_viscoplastic_rate,
+                    const std::function<void()> &beside = {});
     void
     initialize_linear_solver();
     void
