@@ -36,7 +36,7 @@ subsection Output
 end
 subsection Solver
   set Linear solver       = {solver}
-  set Solve in background = {"true" if background else "false"}
+  set Second thread       = {"true" if background else "false"}
 end
 """)
     command = ([executable, prm] if ranks == 1 else
@@ -57,7 +57,7 @@ end
                         r"factors) ([0-9.e+-]+) ms", out)
     memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
     if solver == "Cholesky" and not background:
-        solver = "Cholesky, sequential"
+        solver = "Cholesky, one thread"
     return dict(size=size, ranks=ranks, solver=solver, total=total,
                 phases=phases,
                 damage_solves=calls.get("Damage solve", 0) / steps,
@@ -99,10 +99,11 @@ for size in sizes:
     cholesky.append(run(size, 1, "Cholesky"))
     print(f"{size}^2, 1 rank, Cholesky: {cholesky[-1]['total']:.1f} s",
           flush=True)
-# The same with the solves with the factors after the damage step instead
-# of beside it (Solver/Solve in background = false), at the largest size.
+# The same in one thread (Solver/Second thread = false: the solves with the
+# factors after the damage step instead of beside it, the passes over the
+# cells in one piece), at the largest size.
 sequential = run(sizes[-1], 1, "Cholesky", background=False)
-print(f"{sizes[-1]}^2, 1 rank, Cholesky, sequential: {sequential['total']:.1f} s",
+print(f"{sizes[-1]}^2, 1 rank, Cholesky, one thread: {sequential['total']:.1f} s",
       flush=True)
 bandwidth_one, bandwidth_all = bandwidth()
 
@@ -124,9 +125,12 @@ Debian 12, deal.II 9.4 release build, Trilinos ML AMG. The scene is
 `prm/paper_fig1.prm` (friction, damage, paper's law, fields written every 10
 steps) with N x N cells and 100 steps, with the default solver of the
 displacement system (CG with AMG) and, in the last rows, with `Solver/Linear
-solver = Cholesky` (SuiteSparse CHOLMOD with OpenBLAS, serial; its solves
-run in a second thread beside the damage step, and "Cholesky, sequential"
-is the largest size with `Solver/Solve in background = false`). The
+solver = Cholesky` (SuiteSparse CHOLMOD with OpenBLAS, serial). A serial
+run uses the machine's second core (`Solver/Second thread`, default true):
+the passes over the cells work on two halves of the cells at once, and the
+solves with the factors run beside the damage step; "Cholesky, one thread"
+is the largest size with `Second thread = false`. On 2 ranks each rank is
+bound to one core and uses one thread. The
 **floor** is measured at the end of the same run: one solve of the
 displacement system with the matrix and its AMG or factors as they are and
 the last right-hand side, from a zero start vector (CG iterations in

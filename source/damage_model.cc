@@ -63,10 +63,11 @@ namespace VPContact
     iteration_cap        = prm.get_integer("Maximum active set iterations");
     source_expression    = prm.get("Source");
     const auto constants = parse_function_constants(prm, "Function constants");
-    damage_source = std::make_unique<DamageSource<dim>>(source_expression,
-                                                        constants,
-                                                        "Damage/Source");
-    initial       = parse_function_entry<dim>(prm,
+    for (auto &copy : damage_source)
+      copy = std::make_unique<DamageSource<dim>>(source_expression,
+                                                 constants,
+                                                 "Damage/Source");
+    initial = parse_function_entry<dim>(prm,
                                         "Damage",
                                         "Initial damage",
                                         1,
@@ -96,9 +97,10 @@ namespace VPContact
 
   template <int dim>
   const DamageSource<dim> &
-  DamageModel<dim>::source() const
+  DamageModel<dim>::source(const unsigned int copy) const
   {
-    return *damage_source;
+    AssertIndexRange(copy, damage_source.size());
+    return *damage_source[copy];
   }
 
 

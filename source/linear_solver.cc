@@ -6,34 +6,8 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
-#include <thread>
-
-#ifdef __linux__
-#  include <sched.h>
-#endif
-
 namespace VPContact
 {
-  namespace
-  {
-    // The cores this process may run on: its CPU affinity where the system
-    // tells it (mpirun binds each rank to a core by default), else the
-    // machine's.
-    unsigned int
-    available_cores()
-    {
-#ifdef __linux__
-      cpu_set_t set;
-      CPU_ZERO(&set);
-      if (sched_getaffinity(0, sizeof(set), &set) == 0)
-        return CPU_COUNT(&set);
-#endif
-      return std::thread::hardware_concurrency();
-    }
-  } // namespace
-
-
-
   void
   LinearSolver::declare_parameters(ParameterHandler &prm)
   {
@@ -57,15 +31,15 @@ namespace VPContact
                         "doc/performance.md. Direct factorizations are "
                         "recomputed whenever the stick set changes.");
       prm.declare_entry(
-        "Solve in background",
+        "Second thread",
         "true",
         Patterns::Bool(),
-        "With Linear solver = Cholesky and at least two cores available to "
-        "the process: solve with the factors in a second thread while the "
-        "damage step of the time step runs (both use only data of the "
-        "previous step; the results are the same bits). false: one after "
-        "the other. Ignored for the other solvers, whose solves "
-        "communicate.");
+        "Where each rank has a second core to itself (one process on two "
+        "cores or more): the passes over the cells in every step work on "
+        "two halves of the cells at once, and with Linear solver = "
+        "Cholesky the solve with the factors runs beside the damage step. "
+        "The results are the same bits either way. Under mpirun each rank "
+        "is bound to one core by default, and this changes nothing.");
       prm.declare_entry("Relative tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
@@ -90,12 +64,10 @@ namespace VPContact
     solver_method            = (method == "CG with AMG" ? Method::cg_amg :
                                 method == "Cholesky"    ? Method::cholesky :
                                                           Method::direct);
-    direct_package     = (method == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
-    relative_tolerance = prm.get_double("Relative tolerance");
-    max_iterations     = prm.get_integer("Maximum linear iterations");
-    in_background      = prm.get_bool("Solve in background")
-                    && solver_method == Method::cholesky
-                    && available_cores() >= 2;
+    direct_package       = (method == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
+    relative_tolerance   = prm.get_double("Relative tolerance");
+    max_iterations       = prm.get_integer("Maximum linear iterations");
+    second_thread_wanted = prm.get_bool("Second thread");
     prm.leave_subsection();
     VPContactCheckParameter(relative_tolerance > 0,
                             "Solver/Relative tolerance",
@@ -226,10 +198,26 @@ namespace VPContact
 
 
 
+  void
+  LinearSolver::set_cores_per_rank(const unsigned int cores)
+  {
+    second_thread = second_thread_wanted && cores >= 2;
+  }
+
+
+
+  bool
+  LinearSolver::uses_second_thread() const
+  {
+    return second_thread;
+  }
+
+
+
   bool
   LinearSolver::solves_in_background() const
   {
-    return in_background;
+    return second_thread && solver_method == Method::cholesky;
   }
 
 
@@ -238,7 +226,7 @@ namespace VPContact
   LinearSolver::solve_in_background(TrilinosWrappers::MPI::Vector       &x,
                                     const TrilinosWrappers::MPI::Vector &b)
   {
-    Assert(in_background, ExcInternalError());
+    Assert(solves_in_background(), ExcInternalError());
     // The norm is a reduction over the ranks: taken here, in the calling
     // thread. Exceptions of the second thread reach the caller from get();
     // should the caller leave by an exception first, the future's

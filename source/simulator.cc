@@ -91,6 +91,7 @@ namespace VPContact
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
+    linear_solver.set_cores_per_rank(cores_per_rank(mpi_communicator));
     damage_system.parse_parameters(prm);
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);

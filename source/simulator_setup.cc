@@ -222,6 +222,58 @@ namespace VPContact
               }
           plain_rhs_cell[c] = plain;
         }
+    split_plain_rhs_cells();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::split_plain_rhs_cells()
+  {
+    // assemble_rhs() adds the plain cells of each half by position in a
+    // thread of its own: a cell of the second half that adds to an entry
+    // that a cell of the first half adds to is left to the calling thread,
+    // after both halves, with the cells that are not plain (about one row
+    // of cells along the cut, and the boundary).
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> plain_cells;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && plain_rhs_cell[cell->active_cell_index()])
+        plain_cells.push_back(cell);
+    const auto middle = plain_cells.begin() + plain_cells.size() / 2;
+    rhs_halves[0].assign(plain_cells.begin(), middle);
+    rhs_halves[1].clear();
+
+    std::vector<bool> first_half_entry(locally_owned_dofs.n_elements(), false);
+    const auto        positions = [&](const auto &cell) {
+      const unsigned int *first = plain_rhs_positions.data()
+                                  + cell->active_cell_index() * dofs_per_cell;
+      return make_array_view(first, first + dofs_per_cell);
+    };
+    for (const auto &cell : rhs_halves[0])
+      for (const unsigned int position : positions(cell))
+        if (position != numbers::invalid_unsigned_int)
+          first_half_entry[position] = true;
+    std::vector<bool> serial(triangulation.n_active_cells(), false);
+    for (auto cell = middle; cell != plain_cells.end(); ++cell)
+      {
+        bool shared = false;
+        for (const unsigned int position : positions(*cell))
+          shared = shared
+                   || (position != numbers::invalid_unsigned_int
+                       && first_half_entry[position]);
+        if (shared)
+          serial[(*cell)->active_cell_index()] = true;
+        else
+          rhs_halves[1].push_back(*cell);
+      }
+    rhs_serial_cells.clear();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned()
+          && (!plain_rhs_cell[cell->active_cell_index()]
+              || serial[cell->active_cell_index()]))
+        rhs_serial_cells.push_back(cell);
   }
 
 
@@ -245,6 +297,7 @@ namespace VPContact
           stress_history.set_JxW(cell, fe_values.get_JxW_values());
         }
     cell_kinematics.reinit(dof_handler, quadrature, solution);
+    cell_halves.reinit(dof_handler);
   }
 
 

@@ -17,9 +17,6 @@ namespace VPContact
   {
     TimerOutput::Scope t(computing_timer, "Stress update");
 
-    std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
-    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
-    std::vector<double>                  damage_values(quadrature.size(), 1.);
     // Backward Euler solves for the stress again from sigma_{n-1}, with the
     // strain of u_n and the damage zeta_{n-1} (still in the solution).
     const bool          implicit = viscoplasticity.implicit() && n > 0;
@@ -28,11 +25,16 @@ namespace VPContact
     const double *const solution_entries
       = implicit ? cell_kinematics.local_entries(solution) : nullptr;
 
-    // The largest stress component, to catch an explicit step that has
-    // blown up; NaN compares false and is turned into infinity.
-    double largest = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+    // Each cell writes only its own quadrature points: the two halves of
+    // the cells run at once where there is a second core (CellHalves).
+    // Each returns its largest stress component, to catch an explicit step
+    // that has blown up; NaN compares false and is turned into infinity.
+    const auto update_half = [&](const unsigned int half) {
+      std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
+      std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
+      std::vector<double>                  damage_values(quadrature.size(), 1.);
+      double                               largest = 0;
+      for (const auto &cell : cell_halves.half(half))
         {
           cell_kinematics.strains(cell,
                                   increment_entries,
@@ -78,7 +80,12 @@ namespace VPContact
                 }
             }
         }
-    largest = Utilities::MPI::max(largest, mpi_communicator);
+      return largest;
+    };
+    const auto halves
+      = run_in_halves(linear_solver.uses_second_thread(), update_half);
+    double largest = std::max(halves[0], halves[1]);
+    largest        = Utilities::MPI::max(largest, mpi_communicator);
 
     const double limit
       = viscoplasticity.divergence_limit() * material.youngs_modulus();
@@ -114,24 +121,29 @@ namespace VPContact
     von_mises.reinit(triangulation.n_active_cells());
     components.assign(SymmetricTensor<2, dim>::n_independent_components,
                       Vector<double>(triangulation.n_active_cells()));
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto              history = stress_history.get_data(cell);
-          const auto              JxW     = stress_history.JxW(cell);
-          SymmetricTensor<2, dim> average;
-          double                  volume = 0;
-          for (unsigned int q = 0; q < history.size(); ++q)
-            {
-              average += history[q].stress * JxW[q];
-              volume += JxW[q];
-            }
-          average /= volume;
-          const unsigned int index = cell->active_cell_index();
-          von_mises(index)         = von_mises_norm(average);
-          for (unsigned int c = 0; c < components.size(); ++c)
-            components[c](index) = average.access_raw_entry(c);
-        }
+    // Each cell writes its own entries: the two halves run at once where
+    // there is a second core.
+    run_in_halves(linear_solver.uses_second_thread(),
+                  [&](const unsigned int half) {
+                    for (const auto &cell : cell_halves.half(half))
+                      {
+                        const auto history = stress_history.get_data(cell);
+                        const auto JxW     = stress_history.JxW(cell);
+                        SymmetricTensor<2, dim> average;
+                        double                  volume = 0;
+                        for (unsigned int q = 0; q < history.size(); ++q)
+                          {
+                            average += history[q].stress * JxW[q];
+                            volume += JxW[q];
+                          }
+                        average /= volume;
+                        const unsigned int index = cell->active_cell_index();
+                        von_mises(index)         = von_mises_norm(average);
+                        for (unsigned int c = 0; c < components.size(); ++c)
+                          components[c](index) = average.access_raw_entry(c);
+                      }
+                    return 0;
+                  });
   }
 
 
@@ -143,18 +155,24 @@ namespace VPContact
     // 1/2 (E^{-1} sigma, sigma): the energy stored in the stress. For an
     // elastic body it equals 1/2 (E eps(u), eps(u)); viscous relaxation
     // lowers it.
+    // Summed over each half of the cells, then the two sums (in this order
+    // with one thread or two).
     const SymmetricTensor<4, dim> compliance = invert(material.stiffness());
-    double                        energy     = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto history = stress_history.get_data(cell);
-          const auto JxW     = stress_history.JxW(cell);
-          for (unsigned int q = 0; q < history.size(); ++q)
-            energy += 0.5 * (compliance * history[q].stress) * history[q].stress
-                      * JxW[q];
-        }
-    return Utilities::MPI::sum(energy, mpi_communicator);
+    const auto                    energies
+      = run_in_halves(linear_solver.uses_second_thread(),
+                      [&](const unsigned int half) {
+                        double energy = 0;
+                        for (const auto &cell : cell_halves.half(half))
+                          {
+                            const auto history = stress_history.get_data(cell);
+                            const auto JxW     = stress_history.JxW(cell);
+                            for (unsigned int q = 0; q < history.size(); ++q)
+                              energy += 0.5 * (compliance * history[q].stress)
+                                        * history[q].stress * JxW[q];
+                          }
+                        return energy;
+                      });
+    return Utilities::MPI::sum(energies[0] + energies[1], mpi_communicator);
   }
 
 

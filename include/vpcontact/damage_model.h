@@ -9,6 +9,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
 #include <memory>
 
 namespace VPContact
@@ -41,8 +42,11 @@ namespace VPContact
     double
     diffusion() const;
 
+    /// phi. A muParser expression keeps its variables in the object, so
+    /// two threads evaluate it through two copies: @p copy 0 or 1 (see
+    /// run_in_halves()).
     const DamageSource<dim> &
-    source() const;
+    source(const unsigned int copy = 0) const;
 
     /// zeta_0(x), with values in [0, 1] (checked where it is used).
     const Function<dim> &
@@ -55,12 +59,12 @@ namespace VPContact
     description() const;
 
   private:
-    bool                                 active = false;
-    double                               kappa  = 0.01;
-    std::string                          source_expression;
-    std::unique_ptr<DamageSource<dim>>   damage_source;
-    std::unique_ptr<FunctionParser<dim>> initial;
-    unsigned int                         iteration_cap = 50;
+    bool                                              active = false;
+    double                                            kappa  = 0.01;
+    std::string                                       source_expression;
+    std::array<std::unique_ptr<DamageSource<dim>>, 2> damage_source;
+    std::unique_ptr<FunctionParser<dim>>              initial;
+    unsigned int                                      iteration_cap = 50;
   };
 } // namespace VPContact
 

@@ -71,11 +71,17 @@ namespace VPContact
           TrilinosWrappers::MPI::Vector        &x,
           const TrilinosWrappers::MPI::Vector  &b);
 
-    /**
-     * Whether solve_in_background() runs the solve on a core of its own:
-     * with the Cholesky factors, Solver/Solve in background = true and at
-     * least two cores available to this process.
-     */
+    /// The cores each rank has to itself (see cores_per_rank()): a second
+    /// thread needs two.
+    void
+    set_cores_per_rank(const unsigned int cores);
+
+    /// Solver/Second thread, where each rank has two cores to itself.
+    bool
+    uses_second_thread() const;
+
+    /// Whether solve_in_background() may be called: a second thread and
+    /// the Cholesky factors.
     bool
     solves_in_background() const;
 
@@ -113,8 +119,10 @@ namespace VPContact
     checked_norm(const TrilinosWrappers::MPI::Vector &b);
 
     Method solver_method = Method::cg_amg;
-    /// See solves_in_background().
-    bool in_background = false;
+    /// Solver/Second thread, and whether it is used (see
+    /// set_cores_per_rank()).
+    bool second_thread_wanted = true;
+    bool second_thread        = false;
     /// The Amesos package of the direct method: Amesos_Klu or Amesos_Mumps.
     std::string  direct_package     = "Amesos_Klu";
     double       relative_tolerance = 1e-10;

@@ -4,6 +4,7 @@
 #define vpcontact_simulator_h
 
 #include <vpcontact/boundary_conditions.h>
+#include <vpcontact/cell_halves.h>
 #include <vpcontact/cell_kinematics.h>
 #include <vpcontact/checkpointing.h>
 #include <vpcontact/convergence_table.h>
@@ -40,6 +41,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <array>
 #include <functional>
 #include <string>
 
@@ -179,6 +181,8 @@ namespace VPContact
     setup_stress_history();
     void
     find_plain_rhs_cells();
+    void
+    split_plain_rhs_cells();
 
     // simulator_assembly.cc
     void
@@ -353,12 +357,22 @@ namespace VPContact
     /// for the other cells. See find_plain_rhs_cells().
     std::vector<unsigned int> plain_rhs_positions;
     std::vector<bool>         plain_rhs_cell;
+    /// The plain cells in two halves that add to no common entry of rhs,
+    /// for two threads, and the other cells in their order, for the
+    /// calling thread after them. See find_plain_rhs_cells().
+    std::array<std::vector<typename DoFHandler<dim>::active_cell_iterator>, 2>
+      rhs_halves;
+    std::vector<typename DoFHandler<dim>::active_cell_iterator>
+      rhs_serial_cells;
 
     StressHistory<dim> stress_history;
 
     /// Shape gradients, points and vector positions of every locally owned
     /// cell, for the passes over all cells in every step (once per mesh).
     CellKinematics<dim> cell_kinematics;
+    /// The locally owned cells in two halves, for the passes over all cells
+    /// (two threads where there is a second core; once per mesh).
+    CellHalves<dim> cell_halves;
 
     /// One constant mode per component, for ML (computed once per mesh).
     std::vector<std::vector<bool>> all_constant_modes;
