@@ -108,6 +108,23 @@ namespace VPContact
     stopped_for_resume() const;
 
   private:
+    /// The work vectors of one thread of assemble_rhs() (see
+    /// compute_cell_rhs()).
+    struct RhsScratch
+    {
+      RhsScratch(const unsigned int n_q_points,
+                 const unsigned int dofs_per_cell)
+        : strains(n_q_points)
+        , weighted_predictor(n_q_points)
+        , damage_values(n_q_points, 1.)
+        , cell_rhs(dofs_per_cell)
+      {}
+      std::vector<SymmetricTensor<2, dim>> strains;
+      std::vector<SymmetricTensor<2, dim>> weighted_predictor;
+      std::vector<double>                  damage_values;
+      Vector<double>                       cell_rhs;
+    };
+
     /**
      * The FEValues of a pass over the cells that assembles forces: values,
      * gradients, points and weights on the cell, and on faces for the
@@ -196,6 +213,13 @@ namespace VPContact
                    const FEValues<dim> &fe_values,
                    FEFaceValues<dim>   &fe_face_values,
                    Vector<double>      &cell_vector) const;
+    void
+    compute_cell_rhs(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                     const double        previous_time,
+                     const bool          evaluate_rate,
+                     const double *const solution_entries,
+                     const unsigned int  copy,
+                     RhsScratch         &scratch);
     void
     add_cell_rhs(const typename DoFHandler<dim>::active_cell_iterator &cell,
                  const bool       body_force,

@@ -34,7 +34,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
-  const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+  const bool root   = Utilities::MPI::this_mpi_process(comm) == 0;
   const auto report = [&](const std::string &what, const bool value) {
     const bool everywhere = Utilities::MPI::min(value ? 1 : 0, comm) == 1;
     if (root)
@@ -65,8 +65,9 @@ main(int argc, char **argv)
       }
   bool once = true;
   for (const auto &cell : dof_handler.active_cell_iterators())
-    once = once && visits[cell->active_cell_index()]
-                     == (cell->is_locally_owned() ? 1u : 0u);
+    once = once
+           && visits[cell->active_cell_index()]
+                == (cell->is_locally_owned() ? 1u : 0u);
   report("every owned cell in one half, once", once);
   report("in the order of the cells",
          std::is_sorted(order.begin(), order.end()));
@@ -78,22 +79,20 @@ main(int argc, char **argv)
   for (const bool two_threads : {false, true})
     {
       std::array<std::thread::id, 2> thread;
-      const auto                     sums
-        = run_in_halves(two_threads, [&](const unsigned int h) {
-            thread[h]  = std::this_thread::get_id();
-            double sum = 0;
-            for (const auto &cell : halves.half(h))
-              sum += cell->measure();
-            return sum;
-          });
+      const auto   sums = run_in_halves(two_threads, [&](const unsigned int h) {
+        thread[h]  = std::this_thread::get_id();
+        double sum = 0;
+        for (const auto &cell : halves.half(h))
+          sum += cell->measure();
+        return sum;
+      });
       const double area = Utilities::MPI::sum(sums[0] + sums[1], comm);
       const std::string with = two_threads ? "two threads" : "one thread";
       report(with + ": the halves add up to the area",
              std::abs(area - 1.) < 1e-14);
       report(with + ": the first half in the calling thread",
              thread[0] == caller);
-      report(with + ": the second half in another thread",
-             thread[1] != caller);
+      report(with + ": the second half in another thread", thread[1] != caller);
     }
 
   // An exception of either half reaches the caller; when the first half
