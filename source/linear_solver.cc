@@ -231,10 +231,10 @@ namespace VPContact
     // thread. Exceptions of the second thread reach the caller from get();
     // should the caller leave by an exception first, the future's
     // destructor waits for the thread.
-    std::promise<unsigned int> done;
     if (checked_norm(b) == 0.)
       {
         x = 0.;
+        std::promise<unsigned int> done;
         done.set_value(0);
         return done.get_future();
       }
