@@ -22,19 +22,21 @@ namespace VPContact
     {
       prm.declare_entry(
         "Damage preconditioner",
-        "incomplete Cholesky",
-        Patterns::Selection("incomplete Cholesky|AMG"),
+        "modified incomplete Cholesky",
+        Patterns::Selection(
+          "modified incomplete Cholesky|incomplete Cholesky|AMG"),
         "Preconditioner of the CG solves of the damage problem, M_L/k + "
-        "kappa A restricted to the nodes off the bounds. 'incomplete "
-        "Cholesky': IC(0) of the matrix on a region around the free nodes "
-        "(on each rank's rows), with CG running over the free nodes only, "
-        "so that a solve costs in proportion to the damaged part of the "
-        "body; a few more iterations than AMG, each much cheaper, since a "
-        "step's start vectors are close to the solution. 'AMG': Trilinos ML "
-        "on the whole matrix, masked, whose iteration count grows less with "
-        "the mesh (paper scene: 6.6 and 8.7 per solve at 256^2 and 512^2 "
-        "cells, against 8.5 and 13.9); for meshes far finer than 512^2 "
-        "cells, or where kappa k / h^2 is large.");
+        "kappa A restricted to the nodes off the bounds. 'modified "
+        "incomplete Cholesky': MIC(0) of the matrix on a region around the "
+        "free nodes (on each rank's rows), with CG running over the free "
+        "nodes only, so that a solve costs in proportion to the damaged "
+        "part of the body; MIC(0) keeps the row sums of the matrix, and its "
+        "iterations grow less with the mesh than those of IC(0) (paper "
+        "scene, per solve: 6.0 and 8.4 at 256^2 and 512^2 cells, against "
+        "7.8 and 13.7). 'incomplete Cholesky': the same with IC(0). 'AMG': "
+        "Trilinos ML on the whole matrix, masked, each iteration costing "
+        "several of the others; for meshes far finer than 512^2 cells, or "
+        "where kappa k / h^2 is large.");
     }
     prm.leave_subsection();
   }
@@ -46,9 +48,12 @@ namespace VPContact
   DamageSystem<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    preconditioner_kind = (prm.get("Damage preconditioner") == "AMG" ?
-                             Preconditioner::amg :
-                             Preconditioner::incomplete_cholesky);
+    const std::string kind = prm.get("Damage preconditioner");
+    preconditioner_kind
+      = (kind == "AMG" ? Preconditioner::amg :
+         kind == "incomplete Cholesky" ?
+                         Preconditioner::incomplete_cholesky :
+                         Preconditioner::modified_incomplete_cholesky);
     prm.leave_subsection();
   }
 
@@ -333,10 +338,12 @@ namespace VPContact
         preconditioner = std::move(amg);
       }
     else
-      // IC(0), of the rows near the free nodes, built by the solves.
-      region_solver.initialize(system_matrix,
-                               compact_owned,
-                               system_matrix.get_mpi_communicator());
+      // (M)IC(0), of the rows near the free nodes, built by the solves.
+      region_solver.initialize(
+        system_matrix,
+        compact_owned,
+        system_matrix.get_mpi_communicator(),
+        preconditioner_kind == Preconditioner::modified_incomplete_cholesky);
   }
 
 
@@ -369,8 +376,7 @@ namespace VPContact
   {
     // The region solver measures |b| on the free nodes itself (b vanishes
     // on the held ones), and returns x = 0 for b = 0.
-    const bool region
-      = (preconditioner_kind == Preconditioner::incomplete_cholesky);
+    const bool   region = (preconditioner_kind != Preconditioner::amg);
     const double b_norm = (region ? 0. : b.l2_norm());
     if (!region && b_norm == 0.)
       {

@@ -27,7 +27,7 @@ namespace VPContact
    * - the matrix-vector product visits the rows of the free nodes (the
    *   search directions vanish elsewhere, so the columns of held nodes add
    *   nothing);
-   * - the preconditioner is IC(0) of K_RR, the matrix restricted to a
+   * - the preconditioner is MIC(0) or IC(0) of K_RR, the matrix restricted to a
    *   region R of this rank's nodes that holds the free nodes and a margin
    *   of rings of neighbours around them, applied to vectors that vanish
    *   on R minus the free nodes, with the result masked alike. That is a
@@ -39,7 +39,7 @@ namespace VPContact
    * the free set of that solve, and again within the step whenever a free
    * node falls outside it: it depends only on the step's sets, so a run
    * resumed from a checkpoint computes the same bits. Built over all nodes
-   * it is the IC(0) of this rank's block of K.
+   * it is the (M)IC(0) of this rank's block of K.
    *
    * The vectors are Trilinos vectors of the owned compact damage entries
    * (see DamageSystem); positions below are positions in their local
@@ -52,11 +52,15 @@ namespace VPContact
      * Keep the owned rows (@p owned) of @p matrix as a local CSR matrix,
      * with the columns as positions in a ghosted vector over them (and,
      * for the region, as owned positions). Once per mesh and step size.
+     * With @p modified the preconditioner is the modified incomplete
+     * Cholesky factorization MIC(0) instead of IC(0) (see
+     * factorize_by_columns()).
      */
     void
     initialize(const TrilinosWrappers::SparseMatrix &matrix,
                const IndexSet                       &owned,
-               const MPI_Comm                        communicator);
+               const MPI_Comm                        communicator,
+               const bool                            modified);
 
     /// Forget the region: the next solve builds it from its free set.
     void
@@ -87,7 +91,7 @@ namespace VPContact
     void
     select_free_nodes(const std::vector<unsigned int> &held);
 
-    /// R = F and @p rings rings of neighbours around it; IC(0) of K_RR.
+    /// R = F and @p rings rings of neighbours around it; (M)IC(0) of K_RR.
     void
     build_region(const unsigned int rings);
 
@@ -95,8 +99,14 @@ namespace VPContact
     void
     order_by_levels();
 
+    /// The lower triangle of K_RR, factorized; L^T for the backward sweep.
     void
     factorize_region();
+
+    /// (M)IC(0) in place, column by column; @p entry_in_rows: the position
+    /// in factor_value of each entry of L^T.
+    void
+    factorize_by_columns(const std::vector<unsigned int> &entry_in_rows);
 
     /// dst = K src on the free rows (src vanishes off F); returns the local
     /// part of p . dst over F for @p p in the owned layout (see solve()).
@@ -134,6 +144,8 @@ namespace VPContact
     /// Owned position of each ghosted position (or -1 for a ghost).
     std::vector<int> owned_of_ghosted;
     unsigned int     n_owned = 0;
+    /// MIC(0) instead of IC(0).
+    bool modified = true;
 
     // The free set of the current solve.
     std::vector<bool>         is_free;
@@ -141,7 +153,7 @@ namespace VPContact
 
     // The region R (owned positions, level by level; see
     // order_by_levels()), each owned position's index in it (or -1), and
-    // the IC(0) factor L of K_RR (L L^T ~ K_RR): the strictly lower part in
+    // the (M)IC(0) factor L of K_RR (L L^T ~ K_RR): the strictly lower part in
     // CSR over region indices, the same transposed (the strictly upper
     // part of L^T), and the diagonal.
     std::vector<unsigned int> region;

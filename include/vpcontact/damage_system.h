@@ -49,6 +49,7 @@ namespace VPContact
   public:
     enum class Preconditioner
     {
+      modified_incomplete_cholesky,
       incomplete_cholesky,
       amg
     };
@@ -192,7 +193,8 @@ namespace VPContact
     AffineConstraints<double>            constraints;
     std::vector<unsigned int>            hanging_positions;
 
-    Preconditioner preconditioner_kind = Preconditioner::incomplete_cholesky;
+    Preconditioner preconditioner_kind
+      = Preconditioner::modified_incomplete_cholesky;
     TrilinosWrappers::SparseMatrix                      system_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
     /// The solver with the incomplete Cholesky preconditioner.

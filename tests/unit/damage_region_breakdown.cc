@@ -1,10 +1,12 @@
 // Unit test: DamageRegionSolver on Kershaw's 4 x 4 SPD matrix, whose
 // incomplete Cholesky factorization IC(0) breaks down (the last pivot is
 // 3 - 4/3 - 20/3 = -5). The solver must keep the diagonal of the matrix for
-// such a pivot, so that the preconditioner stays SPD and CG converges to the
-// known solution x* = (1, 2, 3, 4), with no node held and with node 1 held
-// (then x_1 = 0 and the others solve the 3 x 3 system of the free nodes);
-// and for b = 0 it returns x = 0 without iterations.
+// such a pivot, with IC(0) and with its modified form MIC(0) (not meant for
+// a matrix with positive entries off the diagonal), so that the
+// preconditioner stays SPD and CG converges to the known solution x* = (1, 2,
+// 3, 4), with no node held and with node 1 held (then x_1 = 0 and the others
+// solve the 3 x 3 system of the free nodes); and for b = 0 it returns x = 0
+// without iterations.
 #include <vpcontact/damage_region_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -39,45 +41,51 @@ main(int argc, char **argv)
         matrix.set(i, j, kershaw[i][j]);
   matrix.compress(VectorOperation::insert);
 
-  DamageRegionSolver solver;
-  solver.initialize(matrix, all, comm);
-  solver.begin_step();
-
-  for (const bool hold_node_1 : {false, true})
+  for (const bool modified : {false, true})
     {
-      // x*: (1, 2, 3, 4), or with x_1 = 0 and the free rows of b from the
-      // 3 x 3 system.
-      Vector<double> exact({1., 2., 3., 4.});
-      if (hold_node_1)
-        exact(1) = 0.;
-      std::vector<unsigned int> held;
-      if (hold_node_1)
-        held.push_back(1);
+      DamageRegionSolver solver;
+      solver.initialize(matrix, all, comm, modified);
+      solver.begin_step();
+
+      for (const bool hold_node_1 : {false, true})
+        {
+          // x*: (1, 2, 3, 4), or with x_1 = 0 and the free rows of b from the
+          // 3 x 3 system.
+          Vector<double> exact({1., 2., 3., 4.});
+          if (hold_node_1)
+            exact(1) = 0.;
+          std::vector<unsigned int> held;
+          if (hold_node_1)
+            held.push_back(1);
+          TrilinosWrappers::MPI::Vector b(all, comm), x(all, comm);
+          for (unsigned int i = 0; i < 4; ++i)
+            {
+              double s = 0;
+              for (unsigned int j = 0; j < 4; ++j)
+                s += kershaw[i][j] * exact(j);
+              b(i) = (hold_node_1 && i == 1 ? 0. : s);
+            }
+          const unsigned int iterations = solver.solve(b, x, held, 1e-12, 100);
+          double             error      = 0;
+          for (unsigned int i = 0; i < 4; ++i)
+            error = std::max(error, std::abs(x(i) - exact(i)));
+          std::cout << (modified ? "MIC(0), " : "IC(0), ")
+                    << (hold_node_1 ? "node 1 held" : "no node held")
+                    << ": |x - x*| below 1e-9: "
+                    << (error < 1e-9 ? "yes" : "no")
+                    << ", x_1 exactly 0 when held: "
+                    << (!hold_node_1 || x(1) == 0. ? "yes" : "no")
+                    << ", CG iterations at most 6: "
+                    << (iterations <= 6 ? "yes" : "no") << std::endl;
+        }
+
+      // b = 0 from a nonzero start vector: x = 0 at once.
       TrilinosWrappers::MPI::Vector b(all, comm), x(all, comm);
       for (unsigned int i = 0; i < 4; ++i)
-        {
-          double s = 0;
-          for (unsigned int j = 0; j < 4; ++j)
-            s += kershaw[i][j] * exact(j);
-          b(i) = (hold_node_1 && i == 1 ? 0. : s);
-        }
-      const unsigned int iterations = solver.solve(b, x, held, 1e-12, 100);
-      double             error      = 0;
-      for (unsigned int i = 0; i < 4; ++i)
-        error = std::max(error, std::abs(x(i) - exact(i)));
-      std::cout << (hold_node_1 ? "node 1 held" : "no node held")
-                << ": |x - x*| below 1e-9: " << (error < 1e-9 ? "yes" : "no")
-                << ", x_1 exactly 0 when held: "
-                << (!hold_node_1 || x(1) == 0. ? "yes" : "no")
-                << ", CG iterations at most 6: "
-                << (iterations <= 6 ? "yes" : "no") << std::endl;
+        x(i) = 1. + i;
+      const unsigned int iterations = solver.solve(b, x, {}, 1e-12, 100);
+      std::cout << (modified ? "MIC(0), " : "IC(0), ")
+                << "b = 0: x = 0: " << (x.linfty_norm() == 0. ? "yes" : "no")
+                << ", CG iterations " << iterations << std::endl;
     }
-
-  // b = 0 from a nonzero start vector: x = 0 at once.
-  TrilinosWrappers::MPI::Vector b(all, comm), x(all, comm);
-  for (unsigned int i = 0; i < 4; ++i)
-    x(i) = 1. + i;
-  const unsigned int iterations = solver.solve(b, x, {}, 1e-12, 100);
-  std::cout << "b = 0: x = 0: " << (x.linfty_norm() == 0. ? "yes" : "no")
-            << ", CG iterations " << iterations << std::endl;
 }
