@@ -65,18 +65,21 @@ namespace VPContact
 
 
 
-  std::vector<std::pair<unsigned int, double>>
-  DamageBounds::held_changes(
-    const TrilinosWrappers::MPI::Vector &old_damage) const
+  void
+  DamageBounds::held_changes(const TrilinosWrappers::MPI::Vector &old_damage,
+                             std::vector<unsigned int>           &held,
+                             TrilinosWrappers::MPI::Vector       &change) const
   {
-    const double *old_values = old_damage.begin();
-    std::vector<std::pair<unsigned int, double>> held;
+    const double *old_values    = old_damage.begin();
+    double       *change_values = change.begin();
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (owned[i] && status[i] != BoundStatus::free)
-        held.emplace_back(owned_position[i],
-                          (status[i] == BoundStatus::upper ? 1. : 0.)
-                            - old_values[owned_position[i]]);
-    return held;
+        {
+          const unsigned int position = owned_position[i];
+          held.push_back(position);
+          change_values[position] = (status[i] == BoundStatus::upper ? 1. : 0.)
+                                    - old_values[position];
+        }
   }
 
 

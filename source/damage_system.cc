@@ -80,6 +80,10 @@ namespace VPContact
                     locally_relevant_dofs,
                     communicator);
     make_hanging_node_constraints(dof_handler, locally_relevant_dofs, index);
+    has_hanging_nodes = (Utilities::MPI::max(static_cast<unsigned int>(
+                                               constraints.n_constraints()),
+                                             communicator)
+                         > 0);
 
     DynamicSparsityPattern               dsp(compact_relevant);
     std::vector<types::global_dof_index> indices;
@@ -264,6 +268,17 @@ namespace VPContact
   DamageSystem<dim>::hanging_node_constraints() const
   {
     return constraints;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::distribute_hanging_nodes(
+    TrilinosWrappers::MPI::Vector &owned_vector) const
+  {
+    if (has_hanging_nodes)
+      constraints.distribute(owned_vector);
   }
 
 

@@ -154,7 +154,8 @@ namespace VPContact
                     &damage_change,
                     &damage_rhs,
                     &damage_load,
-                    &damage_residual_owned})
+                    &damage_residual_owned,
+                    &damage_bound_change})
       v->reinit(owned, mpi_communicator);
     damage.reinit(owned, relevant, mpi_communicator);
     damage_residual.reinit(owned, relevant, mpi_communicator);
@@ -250,7 +251,7 @@ namespace VPContact
                                                mpi_communicator);
     VectorTools::interpolate(dof_handler, initial, interpolated, damage_mask);
     damage_system.gather(interpolated, damage_owned);
-    damage_system.hanging_node_constraints().distribute(damage_owned);
+    damage_system.distribute_hanging_nodes(damage_owned);
     const auto [lowest, highest] = damage_range(damage_owned);
     VPContactCheckParameter(lowest >= 0 && highest <= 1,
                             "Damage/Initial damage",
@@ -451,7 +452,7 @@ namespace VPContact
     // sets of the previous step and already moves the nodes that this load
     // alone pushes off (or onto) a bound; without it the first solve would
     // only find them (measured: 6 % fewer solves).
-    damage_residual = step_rhs;
+    damage_residual_exchange.copy(step_rhs, damage_residual);
     damage_bounds.update(damage_residual,
                          damage,
                          time_discretization.step_size());
@@ -500,20 +501,16 @@ namespace VPContact
   {
     TimerOutput::Scope                    t(computing_timer, "Damage solve");
     const TrilinosWrappers::SparseMatrix &K = damage_system.matrix();
-    const auto &hanging = damage_system.hanging_node_constraints();
 
     // The held nodes: hanging nodes (change 0 in the solve, set from their
     // parents after it) and the nodes at a bound (their change is
-    // prescribed).
-    std::vector<unsigned int>     held = damage_system.hanging_node_positions();
-    TrilinosWrappers::MPI::Vector bound_change(damage_old);
+    // prescribed). The list and the vector are members: a fresh vector of
+    // the size of the mesh in every solve costs its page faults.
+    std::vector<unsigned int>     &held         = damage_held;
+    TrilinosWrappers::MPI::Vector &bound_change = damage_bound_change;
+    held         = damage_system.hanging_node_positions();
     bound_change = 0.;
-    for (const auto &[position, change] :
-         damage_bounds.held_changes(damage_old))
-      {
-        held.push_back(position);
-        bound_change.begin()[position] = change;
-      }
+    damage_bounds.held_changes(damage_old, held, bound_change);
 
     // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +
     // bound_change))_F; the held rows of the right-hand side are zero. The
@@ -531,7 +528,7 @@ namespace VPContact
                         tolerance,
                         linear_solver.iteration_limit());
     damage_change += bound_change;
-    hanging.distribute(damage_change);
+    damage_system.distribute_hanging_nodes(damage_change);
     damage_owned = damage_old;
     damage_owned += damage_change;
     damage_exchange.copy(damage_owned, damage);
@@ -540,7 +537,7 @@ namespace VPContact
     // carry none) and the next sets.
     K.vmult(damage_residual_owned, damage_owned);
     damage_residual_owned.sadd(-1., 1., damage_load);
-    damage_residual = damage_residual_owned;
+    damage_residual_exchange.copy(damage_residual_owned, damage_residual);
     return damage_bounds.update(damage_residual,
                                 damage,
                                 time_discretization.step_size());
@@ -573,7 +570,7 @@ namespace VPContact
                              "previous step is complete in "
                            + output_writer.directory() + "."));
     // Hanging nodes take the average of their (clipped) parents again.
-    damage_system.hanging_node_constraints().distribute(damage_owned);
+    damage_system.distribute_hanging_nodes(damage_owned);
     last_damage_clip = clip;
     damage_exchange.copy(damage_owned, damage);
     damage_system.scatter(damage_owned, solution_owned);

@@ -67,13 +67,16 @@ namespace VPContact
 
     /**
      * The owned nodes of the active sets with the change of the damage that
-     * puts them on their bound: (position, 1 - zeta_old) on the upper set,
-     * (position, -zeta_old) on the lower one, zeta_old read from
-     * @p old_damage, a vector of the owned entries. The position is that of
-     * the node among the owned entries.
+     * puts them on their bound: their positions among the owned entries
+     * are appended to @p held, and @p change gets 1 - zeta_old at those of
+     * the upper set and -zeta_old at those of the lower one (its other
+     * entries are left alone), zeta_old read from @p old_damage. Both
+     * vectors hold the owned entries.
      */
-    std::vector<std::pair<unsigned int, double>>
-    held_changes(const TrilinosWrappers::MPI::Vector &old_damage) const;
+    void
+    held_changes(const TrilinosWrappers::MPI::Vector &old_damage,
+                 std::vector<unsigned int>           &held,
+                 TrilinosWrappers::MPI::Vector       &change) const;
 
     /**
      * The next sets from the ghosted @p residual and @p damage (laid out

@@ -364,6 +364,7 @@ namespace VPContact
     GhostExchange solution_exchange;
     GhostExchange increment_exchange;
     GhostExchange damage_exchange;
+    GhostExchange damage_residual_exchange;
     /// A Newton correction of the implicit step (owned).
     TrilinosWrappers::MPI::Vector newton_update;
 
@@ -414,6 +415,10 @@ namespace VPContact
     /// right-hand side (owned).
     TrilinosWrappers::MPI::Vector damage_change;
     TrilinosWrappers::MPI::Vector damage_rhs;
+    /// The nodes held in a damage solve (owned positions) and the change
+    /// that puts the nodes at a bound there (owned).
+    std::vector<unsigned int>     damage_held;
+    TrilinosWrappers::MPI::Vector damage_bound_change;
     /// b = M_L zeta_{n-1}/k + (phi_{n-1}, psi): as assembled (with ghost
     /// entries) and owned.
     TrilinosWrappers::MPI::Vector damage_load_assembly;
