@@ -12,20 +12,6 @@
 namespace VPContact
 {
   template <int dim>
-  FieldPatches<dim>
-  DetachableDataOut<dim>::take_patches()
-  {
-    FieldPatches<dim> fields;
-    fields.patches       = std::move(this->patches);
-    fields.names         = this->get_dataset_names();
-    fields.vector_ranges = this->get_nonscalar_data_ranges();
-    this->patches.clear();
-    return fields;
-  }
-
-
-
-  template <int dim>
   FieldWriter<dim>::~FieldWriter()
   {
     // A run that stops with an error leaves its last piece whole: wait
@@ -100,8 +86,6 @@ namespace VPContact
 
 
 
-  template class DetachableDataOut<2>;
-  template class DetachableDataOut<3>;
   template class FieldWriter<2>;
   template class FieldWriter<3>;
 } // namespace VPContact

@@ -190,10 +190,10 @@ namespace VPContact
 
   template <int dim>
   void
-  OutputWriter<dim>::write_fields(DetachableDataOut<dim> &data_out,
-                                  const unsigned int      n,
-                                  const double            time,
-                                  const MPI_Comm          communicator)
+  OutputWriter<dim>::write_fields(FieldPatches<dim> &&fields,
+                                  const unsigned int  n,
+                                  const double        time,
+                                  const MPI_Comm      communicator)
   {
     finish_field_output(communicator);
 
@@ -211,10 +211,9 @@ namespace VPContact
         stem + "." + Utilities::int_to_string(r, rank_digits) + ".vtu");
     const std::string own_piece = output.pieces[output.rank];
 
-    FieldPatches<dim> fields = data_out.take_patches();
-    output.names             = fields.names;
-    output.vector_ranges     = fields.vector_ranges;
-    pending_output           = std::move(output);
+    output.names         = fields.names;
+    output.vector_ranges = fields.vector_ranges;
+    pending_output       = std::move(output);
     field_writer.start(std::move(fields),
                        output_directory + "/" + own_piece,
                        vtk_flags,

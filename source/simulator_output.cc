@@ -2,10 +2,10 @@
 // step, the screen, and the fields for ParaView.
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
+#include <vpcontact/vertex_patches.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <cstdio>
 #include <fstream>
@@ -241,39 +241,18 @@ namespace VPContact
                                const Vector<double>              &von_mises,
                                const std::vector<Vector<double>> &components)
   {
-    // The solution: displacement (a vector) and, in damage scenes, zeta.
-    std::vector<std::string> solution_names(dim, "displacement");
-    std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      interpretation(dim,
-                     DataComponentInterpretation::component_is_part_of_vector);
+    // The solution: displacement (a vector) and, in damage scenes, zeta;
+    // the stresses per cell, and the rank that owns each cell.
+    VertexPatches<dim> fields;
+    for (unsigned int d = 0; d < dim; ++d)
+      fields.add_nodal_field(solution, d, "displacement");
+    fields.mark_last_as_vector(dim, "displacement");
     if (damage_model.is_active())
-      {
-        solution_names.emplace_back("damage");
-        interpretation.push_back(
-          DataComponentInterpretation::component_is_scalar);
-      }
-    DetachableDataOut<dim> data_out;
-    data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(solution,
-                             solution_names,
-                             DataOut<dim>::type_dof_data,
-                             interpretation);
-    data_out.add_data_vector(von_mises,
-                             "von_mises",
-                             DataOut<dim>::type_cell_data);
-    const auto names = stress_component_names<dim>();
-    for (unsigned int c = 0; c < components.size(); ++c)
-      data_out.add_data_vector(components[c],
-                               names[c],
-                               DataOut<dim>::type_cell_data);
-    Vector<float> subdomain(triangulation.n_active_cells());
-    subdomain = static_cast<float>(triangulation.locally_owned_subdomain());
-    data_out.add_data_vector(subdomain,
-                             "subdomain",
-                             DataOut<dim>::type_cell_data);
+      fields.add_nodal_field(solution, dim, "damage");
 
     // Contact nodes: status (0 none, 1 stick, 2 slip) and tangential
-    // traction sigma_tau, carried by the two components of a nodal vector.
+    // traction sigma_tau, carried by the first two components of a nodal
+    // vector.
     TrilinosWrappers::MPI::Vector contact_owned, contact;
     if (friction_active)
       {
@@ -283,16 +262,21 @@ namespace VPContact
                        locally_relevant_dofs,
                        mpi_communicator);
         contact = contact_owned;
-        data_out.add_data_vector(
-          contact,
-          std::vector<std::string>{"contact_status", "tangential_traction"},
-          DataOut<dim>::type_dof_data,
-          std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-            dim,
-            DataComponentInterpretation::component_is_scalar));
+        fields.add_nodal_field(contact, 0, "contact_status");
+        fields.add_nodal_field(contact, 1, "tangential_traction");
       }
-    data_out.build_patches();
-    output_writer.write_fields(data_out,
+
+    fields.add_cell_field(von_mises, "von_mises");
+    const auto names = stress_component_names<dim>();
+    for (unsigned int c = 0; c < components.size(); ++c)
+      fields.add_cell_field(components[c], names[c]);
+    Vector<double> subdomain(triangulation.n_active_cells());
+    subdomain = triangulation.locally_owned_subdomain();
+    fields.add_cell_field(subdomain, "subdomain");
+
+    output_writer.write_fields(fields.build(cell_halves,
+                                            cell_kinematics,
+                                            linear_solver.uses_second_thread()),
                                n,
                                time_discretization.time(n),
                                mpi_communicator);

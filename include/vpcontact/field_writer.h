@@ -4,7 +4,7 @@
 #define vpcontact_field_writer_h
 
 #include <deal.II/base/data_out_base.h>
-#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_component_interpretation.h>
 
 #include <future>
 #include <string>
@@ -24,10 +24,10 @@ namespace VPContact
                DataComponentInterpretation::DataComponentInterpretation>>;
 
   /**
-   * The patches of one field output and the names of its fields, taken out
-   * of the DataOut that built them: what a .vtu file is made of, without
-   * the references to the vectors it was built from, so that it can be
-   * written while those vectors change.
+   * The patches of one field output and the names of its fields (see
+   * VertexPatches): what a .vtu file is made of, without references to the
+   * vectors it was built from, so that it can be written while those
+   * vectors change.
    */
   template <int dim>
   struct FieldPatches
@@ -38,25 +38,12 @@ namespace VPContact
   };
 
   /**
-   * A DataOut whose patches can be taken away once built (deal.II's
-   * DataOut keeps its patches, names and vector ranges to itself).
-   */
-  template <int dim>
-  class DetachableDataOut : public DataOut<dim>
-  {
-  public:
-    /// Move the patches out (leaving none) and copy the names.
-    FieldPatches<dim>
-    take_patches();
-  };
-
-  /**
    * Compresses and writes the .vtu piece of one field output. At 512^2
-   * cells a piece takes about 0.5 s to compress and write (after 0.2 s to
-   * build its patches), in every tenth step of the paper scene; in a second
-   * thread that time overlaps with the next steps, as ASPECT's "Write in
-   * background thread" does. The piece is written through a temporary file
-   * and a rename, so that it is on disk either whole or not at all.
+   * cells a piece takes about 0.5 s to compress and write, in every tenth step
+   * of the paper scene; in a second thread that time overlaps with the next
+   * steps, as ASPECT's "Write in background thread" does. The piece is written
+   * through a temporary file and a rename, so that it is on disk either whole
+   * or not at all.
    *
    * One write at a time: start() waits for the previous one. A failure in
    * the background is reported by wait(), not thrown there, so that the

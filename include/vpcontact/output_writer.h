@@ -8,7 +8,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_component_interpretation.h>
 
 #include <functional>
 #include <optional>
@@ -56,15 +56,15 @@ namespace VPContact
     writes_fields_at(const unsigned int n, const unsigned int n_steps) const;
 
     /**
-     * Write the fields of @p data_out (patches built, and taken from it)
-     * for step @p n: this rank's .vtu piece, in the background if so
-     * chosen. The field output before it is finished first.
+     * Write @p fields for step @p n: this rank's .vtu piece, in the
+     * background if so chosen. The field output before it is finished
+     * first.
      */
     void
-    write_fields(DetachableDataOut<dim> &data_out,
-                 const unsigned int      n,
-                 const double            time,
-                 const MPI_Comm          communicator);
+    write_fields(FieldPatches<dim> &&fields,
+                 const unsigned int  n,
+                 const double        time,
+                 const MPI_Comm      communicator);
 
     /**
      * Wait for the pieces of the last field output on every rank, then
