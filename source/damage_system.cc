@@ -343,6 +343,9 @@ namespace VPContact
   void
   DamageSystem<dim>::initialize_preconditioner()
   {
+    support_product.initialize(system_matrix,
+                               compact_owned,
+                               system_matrix.get_mpi_communicator());
     if (preconditioner_kind == Preconditioner::amg)
       {
         // A scalar elliptic problem: ML's defaults with one constant mode.
@@ -359,6 +362,16 @@ namespace VPContact
         compact_owned,
         system_matrix.get_mpi_communicator(),
         preconditioner_kind == Preconditioner::modified_incomplete_cholesky);
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::vmult_on_support(TrilinosWrappers::MPI::Vector       &y,
+                                      const TrilinosWrappers::MPI::Vector &x)
+  {
+    support_product.vmult(y, x);
   }
 
 

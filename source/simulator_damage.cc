@@ -499,8 +499,7 @@ namespace VPContact
     const TrilinosWrappers::MPI::Vector &step_rhs,
     const double                         tolerance)
   {
-    TimerOutput::Scope                    t(computing_timer, "Damage solve");
-    const TrilinosWrappers::SparseMatrix &K = damage_system.matrix();
+    TimerOutput::Scope t(computing_timer, "Damage solve");
 
     // The held nodes: hanging nodes (change 0 in the solve, set from their
     // parents after it) and the nodes at a bound (their change is
@@ -515,7 +514,7 @@ namespace VPContact
     // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +
     // bound_change))_F; the held rows of the right-hand side are zero. The
     // change of the previous solve is the start vector.
-    K.vmult(damage_rhs, bound_change);
+    damage_system.vmult_on_support(damage_rhs, bound_change);
     damage_rhs.sadd(-1., 1., step_rhs);
     for (const auto i : held)
       {
@@ -533,10 +532,10 @@ namespace VPContact
     damage_owned += damage_change;
     damage_exchange.copy(damage_owned, damage);
 
-    // The multipliers r = b - K zeta (bounds not condensed; hanging nodes
-    // carry none) and the next sets.
-    K.vmult(damage_residual_owned, damage_owned);
-    damage_residual_owned.sadd(-1., 1., damage_load);
+    // The multipliers r = b - K zeta = (b - K zeta_{n-1}) - K change
+    // (bounds not condensed; hanging nodes carry none) and the next sets.
+    damage_system.vmult_on_support(damage_residual_owned, damage_change);
+    damage_residual_owned.sadd(-1., 1., step_rhs);
     damage_residual_exchange.copy(damage_residual_owned, damage_residual);
     return damage_bounds.update(damage_residual,
                                 damage,

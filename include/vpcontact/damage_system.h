@@ -6,6 +6,7 @@
 #define vpcontact_damage_system_h
 
 #include <vpcontact/damage_region_solver.h>
+#include <vpcontact/support_product.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
@@ -156,6 +157,15 @@ namespace VPContact
           const double                         tolerance,
           const unsigned int                   max_iterations);
 
+    /**
+     * y = K x, at the cost of the nonzero entries of x (see
+     * SupportProduct); for the changes of a damage solve, which vanish at
+     * most nodes. Collective. Needs initialize_preconditioner().
+     */
+    void
+    vmult_on_support(TrilinosWrappers::MPI::Vector       &y,
+                     const TrilinosWrappers::MPI::Vector &x);
+
     /// A new time step begins: with the incomplete Cholesky preconditioner
     /// the region of its solves is built anew (see DamageRegionSolver).
     void
@@ -210,6 +220,8 @@ namespace VPContact
       = Preconditioner::modified_incomplete_cholesky;
     TrilinosWrappers::SparseMatrix                      system_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
+    /// K x for vectors x that vanish at most nodes.
+    SupportProduct support_product;
     /// The solver with the incomplete Cholesky preconditioner.
     DamageRegionSolver region_solver;
   };
