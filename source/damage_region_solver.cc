@@ -1,6 +1,7 @@
 // CG for the damage problem on the free nodes, with (M)IC(0) of a region
 // around them (see damage_region_solver.h).
 #include <vpcontact/damage_region_solver.h>
+#include <vpcontact/support_product.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/solver_control.h>
@@ -22,17 +23,12 @@ namespace VPContact
     serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
     n_owned       = owned.n_elements();
     // The ghosted layout the products read: the owned entries and every
-    // column of the owned rows. (Not the relevant damage dofs of the mesh:
-    // on adaptive meshes the rows gather entries from other ranks' cells
-    // whose columns this rank does not see.)
-    const Epetra_CrsMatrix &K          = matrix.trilinos_matrix();
-    const Epetra_BlockMap  &column_map = K.ColMap();
-    IndexSet                columns(owned);
-    for (int c = 0; c < column_map.NumMyElements(); ++c)
-      columns.add_index(TrilinosWrappers::global_index(column_map, c));
-    columns.compress();
+    // column of the owned rows.
+    const Epetra_CrsMatrix &K = matrix.trilinos_matrix();
     direction.reinit(owned, communicator);
-    direction_ghosted.reinit(owned, columns, communicator);
+    direction_ghosted.reinit(owned,
+                             columns_of_owned_rows(matrix, owned),
+                             communicator);
     importer = std::make_unique<Epetra_Import>(
       direction_ghosted.trilinos_vector().Map(),
       direction.trilinos_vector().Map());
@@ -43,14 +39,8 @@ namespace VPContact
     // matrix's column map to the ghosted vector's layout.
     const Epetra_BlockMap &ghosted_map
       = direction_ghosted.trilinos_vector().Map();
-    std::vector<unsigned int> ghosted_of_column(column_map.NumMyElements());
-    for (unsigned int c = 0; c < ghosted_of_column.size(); ++c)
-      {
-        const int position
-          = ghosted_map.LID(TrilinosWrappers::global_index(column_map, c));
-        AssertThrow(position >= 0, ExcInternalError());
-        ghosted_of_column[c] = position;
-      }
+    const std::vector<unsigned int> ghosted_of_column
+      = ghosted_positions_of_columns(matrix, ghosted_map);
     owned_of_ghosted.assign(ghosted_map.NumMyElements(), -1);
     for (unsigned int g = 0; g < owned_of_ghosted.size(); ++g)
       {

@@ -6,21 +6,45 @@
 
 namespace VPContact
 {
+  IndexSet
+  columns_of_owned_rows(const TrilinosWrappers::SparseMatrix &matrix,
+                        const IndexSet                       &owned)
+  {
+    const Epetra_BlockMap &column_map = matrix.trilinos_matrix().ColMap();
+    IndexSet               columns(owned);
+    for (int c = 0; c < column_map.NumMyElements(); ++c)
+      columns.add_index(TrilinosWrappers::global_index(column_map, c));
+    columns.compress();
+    return columns;
+  }
+
+
+
+  std::vector<unsigned int>
+  ghosted_positions_of_columns(const TrilinosWrappers::SparseMatrix &matrix,
+                               const Epetra_BlockMap &ghosted_map)
+  {
+    const Epetra_BlockMap    &column_map = matrix.trilinos_matrix().ColMap();
+    std::vector<unsigned int> positions(column_map.NumMyElements());
+    for (unsigned int c = 0; c < positions.size(); ++c)
+      {
+        const int g
+          = ghosted_map.LID(TrilinosWrappers::global_index(column_map, c));
+        AssertThrow(g >= 0, ExcInternalError());
+        positions[c] = g;
+      }
+    return positions;
+  }
+
+
+
   void
   SupportProduct::initialize(const TrilinosWrappers::SparseMatrix &matrix,
                              const IndexSet                       &owned,
                              const MPI_Comm                        communicator)
   {
-    // The ghosted layout: the owned entries and every column of the owned
-    // rows, as in DamageRegionSolver.
-    const Epetra_CrsMatrix &K          = matrix.trilinos_matrix();
-    const Epetra_BlockMap  &column_map = K.ColMap();
-    IndexSet                columns(owned);
-    for (int c = 0; c < column_map.NumMyElements(); ++c)
-      columns.add_index(TrilinosWrappers::global_index(column_map, c));
-    columns.compress();
     serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
-    x_ghosted.reinit(owned, columns, communicator);
+    x_ghosted.reinit(owned, columns_of_owned_rows(matrix, owned), communicator);
     const Epetra_BlockMap &ghosted_map = x_ghosted.trilinos_vector().Map();
     TrilinosWrappers::MPI::Vector owned_vector(owned, communicator);
     importer
@@ -38,45 +62,35 @@ namespace VPContact
         else
           ghost_positions.push_back(g);
       }
-    std::vector<unsigned int> ghosted_of_column(column_map.NumMyElements());
-    for (unsigned int c = 0; c < ghosted_of_column.size(); ++c)
-      {
-        const int g
-          = ghosted_map.LID(TrilinosWrappers::global_index(column_map, c));
-        AssertThrow(g >= 0, ExcInternalError());
-        ghosted_of_column[c] = g;
-      }
 
-    // The transpose of the owned rows: count, then fill.
+    // The transpose of the owned rows, in two passes over their entries:
+    // count the entries of each column, then place them.
+    const std::vector<unsigned int> ghosted_of_column
+      = ghosted_positions_of_columns(matrix, ghosted_map);
+    const Epetra_CrsMatrix &K              = matrix.trilinos_matrix();
+    const auto              for_each_entry = [&](const auto &visit) {
+      for (int i = 0; i < K.NumMyRows(); ++i)
+        {
+          int     n_entries = 0;
+          double *values    = nullptr;
+          int    *indices   = nullptr;
+          K.ExtractMyRowView(i, n_entries, values, indices);
+          for (int e = 0; e < n_entries; ++e)
+            visit(i, ghosted_of_column[indices[e]], values[e]);
+        }
+    };
     column_start.assign(n_ghosted + 1, 0);
-    for (int i = 0; i < K.NumMyRows(); ++i)
-      {
-        int     n_entries = 0;
-        double *values    = nullptr;
-        int    *indices   = nullptr;
-        K.ExtractMyRowView(i, n_entries, values, indices);
-        for (int e = 0; e < n_entries; ++e)
-          ++column_start[ghosted_of_column[indices[e]] + 1];
-      }
+    for_each_entry([&](int, unsigned int g, double) { ++column_start[g + 1]; });
     for (unsigned int g = 0; g < n_ghosted; ++g)
       column_start[g + 1] += column_start[g];
     row.resize(column_start.back());
     value.resize(column_start.back());
     std::vector<unsigned int> next(column_start.begin(),
                                    column_start.end() - 1);
-    for (int i = 0; i < K.NumMyRows(); ++i)
-      {
-        int     n_entries = 0;
-        double *values    = nullptr;
-        int    *indices   = nullptr;
-        K.ExtractMyRowView(i, n_entries, values, indices);
-        for (int e = 0; e < n_entries; ++e)
-          {
-            const unsigned int g = ghosted_of_column[indices[e]];
-            row[next[g]]         = i;
-            value[next[g]++]     = values[e];
-          }
-      }
+    for_each_entry([&](int i, unsigned int g, double v) {
+      row[next[g]]     = i;
+      value[next[g]++] = v;
+    });
   }
 
 

@@ -15,6 +15,26 @@ namespace VPContact
   using namespace dealii;
 
   /**
+   * The indices a ghosted vector needs for the products of this rank's rows
+   * of @p matrix: the owned ones (@p owned) and every column of the owned
+   * rows. (Not the relevant dofs of the mesh: on adaptive meshes the rows
+   * gather entries from other ranks' cells whose columns this rank does
+   * not see.)
+   */
+  IndexSet
+  columns_of_owned_rows(const TrilinosWrappers::SparseMatrix &matrix,
+                        const IndexSet                       &owned);
+
+  /**
+   * For each local column of @p matrix, its position in the local storage
+   * of a vector with the layout @p ghosted_map, which must hold it (see
+   * columns_of_owned_rows()).
+   */
+  std::vector<unsigned int>
+  ghosted_positions_of_columns(const TrilinosWrappers::SparseMatrix &matrix,
+                               const Epetra_BlockMap &ghosted_map);
+
+  /**
    * y = K x for a symmetric matrix K, summed column by column over the
    * entries of x that are not zero.
    *
