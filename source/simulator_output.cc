@@ -252,16 +252,17 @@ namespace VPContact
 
     // Contact nodes: status (0 none, 1 stick, 2 slip) and tangential
     // traction sigma_tau, carried by the first two components of a nodal
-    // vector.
-    TrilinosWrappers::MPI::Vector contact_owned, contact;
+    // vector. Its two vectors are copies of the solution's, so that they
+    // share their layouts: CellKinematics and the GhostExchange recognize
+    // them at once, instead of comparing (and keeping) a new layout in
+    // every output.
+    TrilinosWrappers::MPI::Vector contact_owned(solution_owned),
+      contact(solution);
     if (friction_active)
       {
-        contact_owned.reinit(locally_owned_dofs, mpi_communicator);
+        contact_owned = 0.;
         friction_active_set.fill_output(contact_owned);
-        contact.reinit(locally_owned_dofs,
-                       locally_relevant_dofs,
-                       mpi_communicator);
-        contact = contact_owned;
+        solution_exchange.copy(contact_owned, contact);
         fields.add_nodal_field(contact, 0, "contact_status");
         fields.add_nodal_field(contact, 1, "tangential_traction");
       }

@@ -135,7 +135,8 @@ namespace VPContact
     TrilinosWrappers::SparseMatrix &
     matrix();
 
-    /// Build the preconditioner of the assembled matrix (after assembly).
+    /// Build the preconditioner of the assembled matrix, and the matrix's
+    /// copy by columns for vmult_on_support() (after assembly).
     void
     initialize_preconditioner();
 
