@@ -2,6 +2,7 @@
 #include <vpcontact/application.h>
 #include <vpcontact/parameter_listing.h>
 #include <vpcontact/simulator.h>
+#include <vpcontact/sparse_cholesky.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -142,7 +143,11 @@ namespace VPContact
   run_application(int argc, char **argv)
   {
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-    const MPI_Comm                   communicator = MPI_COMM_WORLD;
+    // One BLAS thread (a threaded OpenBLAS would start one per core in
+    // every rank); only the Cholesky factorization raises it, see
+    // SparseCholesky::factorize().
+    set_blas_threads(1);
+    const MPI_Comm communicator = MPI_COMM_WORLD;
     const bool rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
     // --resume may stand before or after the scene; the rest of the command
     // line is read without it.

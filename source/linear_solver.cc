@@ -120,7 +120,7 @@ namespace VPContact
     else if (solver_method == Method::cholesky)
       {
         cholesky = std::make_unique<SparseCholesky>();
-        cholesky->factorize(matrix);
+        cholesky->factorize(matrix, second_thread ? 2 : 1);
       }
     else
       {

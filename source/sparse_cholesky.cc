@@ -6,6 +6,7 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
 #include <algorithm>
+#include <dlfcn.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -78,6 +79,28 @@ namespace VPContact
 
 
 
+  void
+  set_blas_threads(const unsigned int n_threads)
+  {
+    // openblas_set_num_threads() is OpenBLAS's own, not part of the BLAS
+    // interface, so it is looked up at run time and the program links
+    // against any BLAS (Debian's alternatives choose it). Debian's OpenBLAS
+    // comes as two files, libblas.so.3 and libopenblas.so.0, and the
+    // libraries we link load both: each has its own thread count, and the
+    // BLAS calls of CHOLMOD may go to either, so both are set.
+    using Setter = void (*)(int);
+    for (const char *library : {"libblas.so.3", "libopenblas.so.0"})
+      if (void *handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD))
+        {
+          if (const auto setter = reinterpret_cast<Setter>(
+                dlsym(handle, "openblas_set_num_threads")))
+            setter(static_cast<int>(n_threads));
+          dlclose(handle);
+        }
+  }
+
+
+
   SparseCholesky::SparseCholesky()
   {
     cholmod_l_start(&common);
@@ -111,6 +134,31 @@ namespace VPContact
         cholmod_l_free_dense(d, &common);
     if (factor != nullptr)
       cholmod_l_free_factor(&factor, &common);
+  }
+
+
+
+  void
+  SparseCholesky::factorize(const TrilinosWrappers::SparseMatrix &matrix,
+                            const unsigned int                    blas_threads)
+  {
+    // The supernodes of the factorization are dense products, large
+    // enough at the sizes where it matters for two threads to pay: at
+    // 512^2 cells (789507 unknowns) 4.7-5.1 s with one thread, 3.1 s with
+    // two (three runs each, alternating). Nothing else runs at this point, so
+    // the second core is free. The substitutions stay in one thread: they
+    // run beside the damage step.
+    set_blas_threads(blas_threads);
+    try
+      {
+        factorize(matrix);
+      }
+    catch (...)
+      {
+        set_blas_threads(1);
+        throw;
+      }
+    set_blas_threads(1);
   }
 
 

@@ -23,6 +23,16 @@ namespace VPContact
    * forward and a backward triangular sweep. Only the upper triangle of K
    * is read; K must be symmetric, which the displacement matrix is.
    */
+  /**
+   * Set the number of threads of the BLAS, where the BLAS in use can start
+   * threads (OpenBLAS, looked up at run time: with another BLAS, or the
+   * serial OpenBLAS, this does nothing). The program keeps it at one (see
+   * run_application()): the ranks of an mpirun, and the second thread of a
+   * serial run, each have a core of their own.
+   */
+  void
+  set_blas_threads(const unsigned int n_threads);
+
   class SparseCholesky
   {
   public:
@@ -39,6 +49,15 @@ namespace VPContact
      */
     void
     factorize(const TrilinosWrappers::SparseMatrix &matrix);
+
+    /**
+     * As factorize(), with @p blas_threads threads in the BLAS for the
+     * dense products of the supernodes, where the BLAS can start threads
+     * (OpenBLAS built with pthreads); back to one thread afterwards.
+     */
+    void
+    factorize(const TrilinosWrappers::SparseMatrix &matrix,
+              const unsigned int                    blas_threads);
 
     /// dst = K^{-1} src.
     void

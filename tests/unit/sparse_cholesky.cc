@@ -3,13 +3,19 @@
 // is known, x_i = (n + 1 - i) / (n + 1), and K x = K y recovers any y to
 // round-off; a second solve with the same factors must do the same. A matrix
 // that is not positive definite is refused with a message that names the
-// column where the factorization broke down.
+// column where the factorization broke down. The factorization may use two
+// BLAS threads (set_blas_threads()): it gives the same solution, and leaves
+// the BLAS at one thread, the program's setting. The thread count is read
+// back from every OpenBLAS library loaded: the test fails if the count is
+// not reached (the libraries not found, or only one of them set). It does
+// not see whether threads start: the serial OpenBLAS keeps the count too.
 #include <vpcontact/sparse_cholesky.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cmath>
+#include <dlfcn.h>
 #include <iostream>
 
 using namespace VPContact;
@@ -37,6 +43,25 @@ namespace
       }
     matrix.compress(VectorOperation::insert);
   }
+
+  // The thread counts of the OpenBLAS libraries that are loaded (Debian's
+  // OpenBLAS loads as libblas.so.3 and libopenblas.so.0).
+  std::string
+  blas_threads()
+  {
+    std::string text;
+    using Getter = int (*)();
+    for (const char *library : {"libblas.so.3", "libopenblas.so.0"})
+      if (void *handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD))
+        {
+          if (const auto getter = reinterpret_cast<Getter>(
+                dlsym(handle, "openblas_get_num_threads")))
+            text += std::string(text.empty() ? "" : ", ") + library + ": "
+                    + std::to_string(getter());
+          dlclose(handle);
+        }
+    return text.empty() ? "no OpenBLAS loaded" : text;
+  }
 } // namespace
 
 int
@@ -47,8 +72,13 @@ main(int argc, char **argv)
   TrilinosWrappers::SparseMatrix   laplacian;
   make_tridiagonal(laplacian, n, std::vector<double>(n, 2.));
 
+  set_blas_threads(2);
+  std::cout << "BLAS threads after set_blas_threads(2): " << blas_threads()
+            << std::endl;
   SparseCholesky cholesky;
-  cholesky.factorize(laplacian);
+  cholesky.factorize(laplacian, 2);
+  std::cout << "BLAS threads after a factorization in 2: " << blas_threads()
+            << std::endl;
   std::cout << "n = " << n << ", nonzeros of L: " << cholesky.factor_nonzeros()
             << " (a tridiagonal matrix fills nothing: 2n - 1 = " << 2 * n - 1
             << ")" << std::endl;
