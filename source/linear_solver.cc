@@ -37,9 +37,13 @@ namespace VPContact
         "Where each rank has a second core to itself (one process on two "
         "cores or more): the passes over the cells in every step work on "
         "two halves of the cells at once, and with Linear solver = "
-        "Cholesky the solve with the factors runs beside the damage step. "
-        "The results are the same bits either way. Under mpirun each rank "
-        "is bound to one core by default, and this changes nothing.");
+        "Cholesky the solve with the factors runs beside the damage step "
+        "and the factorization uses two BLAS threads (with a threaded "
+        "OpenBLAS). The results are the same bits either way, but for the "
+        "factorization in two threads, which rounds differently (the "
+        "figures printed are the same; each setting gives the same bits "
+        "from run to run). Under mpirun each rank is bound to one core by "
+        "default, and this changes nothing.");
       prm.declare_entry("Relative tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
