@@ -1,5 +1,6 @@
 // A sparse Cholesky factorization (SuiteSparse CHOLMOD) of a symmetric
-// positive definite Trilinos matrix held whole on one process.
+// positive definite Trilinos matrix held whole on one process, and the
+// number of BLAS threads its factorization uses.
 #ifndef vpcontact_sparse_cholesky_h
 #define vpcontact_sparse_cholesky_h
 
@@ -13,6 +14,16 @@ namespace VPContact
   using namespace dealii;
 
   /**
+   * Set the number of threads of the BLAS, where the BLAS in use can start
+   * threads (OpenBLAS, looked up at run time: with another BLAS, or the
+   * serial OpenBLAS, this does nothing). The program keeps it at one (see
+   * run_application()): the ranks of an mpirun, and the second thread of a
+   * serial run, each have a core of their own.
+   */
+  void
+  set_blas_threads(const unsigned int n_threads);
+
+  /**
    * The factors L L^T = P K P^T of a symmetric positive definite matrix K,
    * computed once by factorize() and applied by solve() as often as
    * needed.
@@ -23,16 +34,6 @@ namespace VPContact
    * forward and a backward triangular sweep. Only the upper triangle of K
    * is read; K must be symmetric, which the displacement matrix is.
    */
-  /**
-   * Set the number of threads of the BLAS, where the BLAS in use can start
-   * threads (OpenBLAS, looked up at run time: with another BLAS, or the
-   * serial OpenBLAS, this does nothing). The program keeps it at one (see
-   * run_application()): the ranks of an mpirun, and the second thread of a
-   * serial run, each have a core of their own.
-   */
-  void
-  set_blas_threads(const unsigned int n_threads);
-
   class SparseCholesky
   {
   public:
