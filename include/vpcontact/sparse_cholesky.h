@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <cholmod.h>
+#include <vector>
 
 namespace VPContact
 {
@@ -31,7 +32,8 @@ namespace VPContact
    * CHOLMOD orders the unknowns to reduce fill (AMD, and METIS or nested
    * dissection only when AMD fills too much) and factorizes by supernodes,
    * so most of its work is dense matrix products (BLAS). A solve is a
-   * forward and a backward triangular sweep. Only the upper triangle of K
+   * forward and a backward triangular sweep over the supernodes, our own
+   * (see forward_substitution()). Only the upper triangle of K
    * is read; K must be symmetric, which the displacement matrix is.
    */
   class SparseCholesky
@@ -74,14 +76,19 @@ namespace VPContact
     void
     release();
 
+    /// L^{-1} and L^{-T} applied in place to permuted.
+    void
+    forward_substitution() const;
+    void
+    backward_substitution() const;
+
     mutable cholmod_common common;
     cholmod_factor        *factor = nullptr;
-    /// The right-hand side and the solution with its workspace, kept
-    /// between solves so that solve() allocates nothing.
-    mutable cholmod_dense *rhs       = nullptr;
-    mutable cholmod_dense *x         = nullptr;
-    mutable cholmod_dense *workspace = nullptr;
-    mutable cholmod_dense *e_work    = nullptr;
+    /// The right-hand side and the solution in the order of L, and the
+    /// entries of a supernode's rows below its diagonal block, kept between
+    /// solves so that solve() allocates nothing.
+    mutable std::vector<double> permuted;
+    mutable std::vector<double> below_values;
   };
 } // namespace VPContact
 

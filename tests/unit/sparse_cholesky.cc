@@ -1,7 +1,13 @@
 // Unit test: the sparse Cholesky factorization (SparseCholesky, CHOLMOD).
 // For the 1d Laplacian tridiag(-1, 2, -1) of size n the solution of K x = e_1
 // is known, x_i = (n + 1 - i) / (n + 1), and K x = K y recovers any y to
-// round-off; a second solve with the same factors must do the same. A matrix
+// round-off; a second solve with the same factors must do the same. The
+// same on the 2d Laplacian of an 80 x 80 grid, whose factor has supernodes
+// of up to a separator's width (about 80 columns) with rows below them: the
+// substitutions over the supernodes are the program's own (see
+// SparseCholesky::forward_substitution()), and this is where their blocks
+// of four columns, the columns left over, and the rows below the diagonal
+// blocks are all used. A matrix
 // that is not positive definite is refused with a message that names the
 // column where the factorization broke down. The factorization may use two
 // BLAS threads (set_blas_threads()): it gives the same solution, and leaves
@@ -41,6 +47,36 @@ namespace
         if (i + 1 < n)
           matrix.set(i, i + 1, -1.);
       }
+    matrix.compress(VectorOperation::insert);
+  }
+
+  // The 5-point Laplacian of an m x m grid of unknowns, Dirichlet around.
+  void
+  make_laplacian_2d(TrilinosWrappers::SparseMatrix &matrix,
+                    const unsigned int              m)
+  {
+    const unsigned int     n = m * m;
+    DynamicSparsityPattern dsp(n, n);
+    const auto             neighbours = [m](const unsigned int i) {
+      std::vector<unsigned int> result = {i};
+      const unsigned int        row = i / m, column = i % m;
+      if (column > 0)
+        result.push_back(i - 1);
+      if (column + 1 < m)
+        result.push_back(i + 1);
+      if (row > 0)
+        result.push_back(i - m);
+      if (row + 1 < m)
+        result.push_back(i + m);
+      return result;
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      for (const unsigned int j : neighbours(i))
+        dsp.add(i, j);
+    matrix.reinit(complete_index_set(n), dsp, MPI_COMM_WORLD);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const unsigned int j : neighbours(i))
+        matrix.set(i, j, i == j ? 4. : -1.);
     matrix.compress(VectorOperation::insert);
   }
 
@@ -106,6 +142,29 @@ main(int argc, char **argv)
             << (x.linfty_norm() < 1e-12 ? "below 1e-12" :
                                           std::to_string(x.linfty_norm()))
             << std::endl;
+
+  // The 2d Laplacian: K x = K y, for y_i = sin(i), relative to |y|_inf.
+  {
+    const unsigned int             m = 80;
+    TrilinosWrappers::SparseMatrix laplacian_2d;
+    make_laplacian_2d(laplacian_2d, m);
+    SparseCholesky cholesky_2d;
+    cholesky_2d.factorize(laplacian_2d);
+    TrilinosWrappers::MPI::Vector y_2d(complete_index_set(m * m),
+                                       MPI_COMM_WORLD);
+    TrilinosWrappers::MPI::Vector b_2d(y_2d), x_2d(y_2d);
+    for (unsigned int i = 0; i < m * m; ++i)
+      y_2d(i) = std::sin(i);
+    laplacian_2d.vmult(b_2d, y_2d);
+    cholesky_2d.solve(x_2d, b_2d);
+    x_2d -= y_2d;
+    const double relative_error = x_2d.linfty_norm() / y_2d.linfty_norm();
+    std::cout << "2d Laplacian, " << m << " x " << m
+              << " grid: K x = K y, |x - y|_inf / |y|_inf "
+              << (relative_error < 1e-10 ? "below 1e-10" :
+                                           std::to_string(relative_error))
+              << std::endl;
+  }
 
   // diag(2, ..., 2, 0.5, 2, ...) with -1 beside it: the pivot of row 10
   // becomes 0.5 - 10/11 < 0.
