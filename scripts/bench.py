@@ -140,8 +140,9 @@ Debian 12, deal.II 9.4 release build, Trilinos ML AMG. The scene is
 `prm/paper_fig1.prm` (friction, damage, paper's law, fields written every 10
 steps) with N x N cells and 100 steps, with the default solver of the
 displacement system (CG with AMG) and, in the last rows, with `Solver/Linear
-solver = Cholesky` (SuiteSparse CHOLMOD with OpenBLAS; the factorization
-in two BLAS threads, the solves in one). A serial
+solver = Cholesky` (a supernodal factorization by SuiteSparse CHOLMOD
+with OpenBLAS in two BLAS threads; the substitutions the program's own, in
+one thread). A serial
 run uses the machine's second core (`Solver/Second thread`, default true):
 the passes over the cells work on two halves of the cells at once, and the
 solves with the factors run beside the damage step; "Cholesky, one thread"
