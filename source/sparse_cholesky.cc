@@ -232,14 +232,22 @@ namespace VPContact
     Assert(factor != nullptr, ExcMessage("factorize() first"));
     // K^{-1} = P^T L^{-T} L^{-1} P: row k of the permuted system is row
     // Perm[k] of K.
-    const long  n    = static_cast<long>(factor->n);
-    const long *perm = static_cast<const long *>(factor->Perm);
+    // On one process the local storage of the vectors is in the global
+    // order, so they are read and written through it, without an index
+    // lookup per entry.
+    const long n = static_cast<long>(factor->n);
+    Assert(static_cast<long>(src.locally_owned_size()) == n
+             && static_cast<long>(dst.locally_owned_size()) == n,
+           ExcMessage("The vectors must live on one process, as the factors"));
+    const long   *perm   = static_cast<const long *>(factor->Perm);
+    const double *source = src.begin();
+    double       *target = dst.begin();
     for (long k = 0; k < n; ++k)
-      permuted[k] = src[perm[k]];
+      permuted[k] = source[perm[k]];
     forward_substitution();
     backward_substitution();
     for (long k = 0; k < n; ++k)
-      dst[perm[k]] = permuted[k];
+      target[perm[k]] = permuted[k];
   }
 
 
