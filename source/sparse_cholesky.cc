@@ -6,6 +6,7 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
 #include <algorithm>
+#include <array>
 #include <dlfcn.h>
 #include <string>
 #include <utility>
@@ -268,12 +269,15 @@ namespace VPContact
   // below them.
   namespace
   {
+    /// Four columns of a block, from the same row on.
+    using FourColumns = std::array<const double *, 4>;
+
     /// t[i] -= sum_q c[q][i] y[q] for i < n, q < 4.
     inline void
-    subtract_four_columns(const double *const c[4],
-                          const double        y[4],
-                          double             *t,
-                          const long          n)
+    subtract_four_columns(const FourColumns &c,
+                          const double       y[4],
+                          double            *t,
+                          const long         n)
     {
       for (long i = 0; i < n; ++i)
         t[i] -= (c[0][i] * y[0] + c[1][i] * y[1])
@@ -282,10 +286,10 @@ namespace VPContact
 
     /// sum[q] += sum_i c[q][i] t[i] for i < n, q < 4.
     inline void
-    add_four_dot_products(const double *const c[4],
-                          const double       *t,
-                          const long          n,
-                          double              sum[4])
+    add_four_dot_products(const FourColumns &c,
+                          const double      *t,
+                          const long         n,
+                          double             sum[4])
     {
       double s0 = 0., s1 = 0., s2 = 0., s3 = 0.;
       for (long i = 0; i < n; ++i)
@@ -325,6 +329,16 @@ namespace VPContact
         return entries + j * n_rows;
       }
 
+      /// Columns j, ..., j+3 from row @p row of the block on.
+      FourColumns
+      four_columns(const long j, const long row) const
+      {
+        return {{column(j) + row,
+                 column(j + 1) + row,
+                 column(j + 2) + row,
+                 column(j + 3) + row}};
+      }
+
       long          first, n_cols, n_rows, n_below;
       const double *entries;
       const long   *below;
@@ -347,10 +361,7 @@ namespace VPContact
         long j = 0;
         for (; j + 4 <= node.n_cols; j += 4)
           {
-            const double *const c[4] = {node.column(j),
-                                        node.column(j + 1),
-                                        node.column(j + 2),
-                                        node.column(j + 3)};
+            const FourColumns c = node.four_columns(j, 0);
             // The 4 x 4 lower triangle on the diagonal.
             for (unsigned int q = 0; q < 4; ++q)
               {
@@ -358,17 +369,14 @@ namespace VPContact
                 for (unsigned int p = q + 1; p < 4; ++p)
                   x[j + p] -= c[q][j + p] * x[j + q];
               }
-            const double *const below_diagonal[4]
-              = {c[0] + j + 4, c[1] + j + 4, c[2] + j + 4, c[3] + j + 4};
-            subtract_four_columns(below_diagonal,
+            subtract_four_columns(node.four_columns(j, j + 4),
                                   x + j,
                                   x + j + 4,
                                   node.n_cols - j - 4);
-            const double *const below_block[4] = {c[0] + node.n_cols,
-                                                  c[1] + node.n_cols,
-                                                  c[2] + node.n_cols,
-                                                  c[3] + node.n_cols};
-            subtract_four_columns(below_block, x + j, e, node.n_below);
+            subtract_four_columns(node.four_columns(j, node.n_cols),
+                                  x + j,
+                                  e,
+                                  node.n_below);
           }
         for (; j < node.n_cols; ++j)
           {
@@ -412,22 +420,16 @@ namespace VPContact
           }
         for (long j = n_grouped - 4; j >= 0; j -= 4)
           {
-            const double *const c[4]   = {node.column(j),
-                                          node.column(j + 1),
-                                          node.column(j + 2),
-                                          node.column(j + 3)};
-            double              sum[4] = {0., 0., 0., 0.};
-            const double *const below_diagonal[4]
-              = {c[0] + j + 4, c[1] + j + 4, c[2] + j + 4, c[3] + j + 4};
-            add_four_dot_products(below_diagonal,
+            const FourColumns c      = node.four_columns(j, 0);
+            double            sum[4] = {0., 0., 0., 0.};
+            add_four_dot_products(node.four_columns(j, j + 4),
                                   x + j + 4,
                                   node.n_cols - j - 4,
                                   sum);
-            const double *const below_block[4] = {c[0] + node.n_cols,
-                                                  c[1] + node.n_cols,
-                                                  c[2] + node.n_cols,
-                                                  c[3] + node.n_cols};
-            add_four_dot_products(below_block, e, node.n_below, sum);
+            add_four_dot_products(node.four_columns(j, node.n_cols),
+                                  e,
+                                  node.n_below,
+                                  sum);
             // The 4 x 4 upper triangle (the transposed diagonal block).
             for (unsigned int q = 4; q-- > 0;)
               {
