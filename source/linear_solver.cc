@@ -158,7 +158,9 @@ namespace VPContact
       }
     if (solver_method == Method::cholesky)
       {
-        cholesky->solve(x, b);
+        // Nothing runs beside this solve: with a second core the
+        // substitutions use it (see SparseCholesky::solve()).
+        cholesky->solve(x, b, second_thread ? 2 : 1);
         return 1;
       }
 

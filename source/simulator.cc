@@ -425,12 +425,16 @@ namespace VPContact
   {
     // The floor of a time step: one solve of the displacement system with
     // everything reused (matrix and preconditioner as they are, the last
-    // right-hand side), from a zero start vector.
+    // right-hand side), from a zero start vector, made as the steps make
+    // their first solve: where the damage step runs beside the solve, in
+    // the second thread and in one thread, as there (alone here).
     TrilinosWrappers::MPI::Vector x(increment_owned);
     x = 0.;
     Timer              timer;
     const unsigned int iterations
-      = linear_solver.solve(stiffness_matrix, x, rhs);
+      = (linear_solver.solves_in_background() && damage_model.is_active() ?
+           linear_solver.solve_in_background(x, rhs).get() :
+           linear_solver.solve(stiffness_matrix, x, rhs));
     timer.stop();
 
     // Its two kernels, each timed over ten applications: they tell how the

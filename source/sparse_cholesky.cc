@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <dlfcn.h>
+#include <future>
 #include <string>
 #include <utility>
 #include <vector>
@@ -212,8 +213,9 @@ namespace VPContact
                              "solver = CG with AMG, which needs far less "
                              "memory."));
 
-    // The vectors of the substitutions, allocated here so that solve()
-    // allocates nothing.
+    // The split of the supernodes for the substitutions, and their
+    // vectors, allocated here so that solve() allocates nothing.
+    partition = SupernodePartition(*factor);
     permuted.resize(n);
     const long *pi         = static_cast<const long *>(factor->pi);
     const long *super      = static_cast<const long *>(factor->super);
@@ -221,14 +223,19 @@ namespace VPContact
     for (std::size_t s = 0; s < factor->nsuper; ++s)
       most_below
         = std::max(most_below, (pi[s + 1] - pi[s]) - (super[s + 1] - super[s]));
-    below_values.resize(most_below);
+    for (unsigned int g = 0; g < 2; ++g)
+      {
+        below_values[g].resize(most_below);
+        top_sums[g].resize(partition.top_columns.size());
+      }
   }
 
 
 
   void
   SparseCholesky::solve(TrilinosWrappers::MPI::Vector       &dst,
-                        const TrilinosWrappers::MPI::Vector &src) const
+                        const TrilinosWrappers::MPI::Vector &src,
+                        const unsigned int                   n_threads) const
   {
     Assert(factor != nullptr, ExcMessage("factorize() first"));
     // K^{-1} = P^T L^{-T} L^{-1} P: row k of the permuted system is row
@@ -245,8 +252,8 @@ namespace VPContact
     double       *target = dst.begin();
     for (long k = 0; k < n; ++k)
       permuted[k] = source[perm[k]];
-    forward_substitution();
-    backward_substitution();
+    forward_substitution(n_threads);
+    backward_substitution(n_threads);
     for (long k = 0; k < n; ++k)
       target[perm[k]] = permuted[k];
   }
@@ -347,98 +354,181 @@ namespace VPContact
 
 
 
+  namespace
+  {
+    /// The forward substitution of supernode @p node: its unknowns of @p y
+    /// solved for, and their products with the rows below subtracted, from
+    /// the first @p n_direct rows in y, from the others (the rows of the
+    /// top) in top_sum at their top_slot. @p e has room for the rows below.
+    void
+    forward_supernode(const Supernode &node,
+                      double *const    y,
+                      double *const    e,
+                      const long       n_direct,
+                      double *const    top_sum,
+                      const int *const top_slot)
+    {
+      double *const x = y + node.first;
+      // e collects minus the products of the rows below with x.
+      std::fill(e, e + node.n_below, 0.);
+      long j = 0;
+      for (; j + 4 <= node.n_cols; j += 4)
+        {
+          const FourColumns c = node.four_columns(j, 0);
+          // The 4 x 4 lower triangle on the diagonal.
+          for (unsigned int q = 0; q < 4; ++q)
+            {
+              x[j + q] /= c[q][j + q];
+              for (unsigned int p = q + 1; p < 4; ++p)
+                x[j + p] -= c[q][j + p] * x[j + q];
+            }
+          subtract_four_columns(node.four_columns(j, j + 4),
+                                x + j,
+                                x + j + 4,
+                                node.n_cols - j - 4);
+          subtract_four_columns(node.four_columns(j, node.n_cols),
+                                x + j,
+                                e,
+                                node.n_below);
+        }
+      for (; j < node.n_cols; ++j)
+        {
+          const double *const c = node.column(j);
+          x[j] /= c[j];
+          for (long i = j + 1; i < node.n_cols; ++i)
+            x[i] -= c[i] * x[j];
+          for (long i = 0; i < node.n_below; ++i)
+            e[i] -= c[node.n_cols + i] * x[j];
+        }
+      for (long i = 0; i < n_direct; ++i)
+        y[node.below[i]] += e[i];
+      for (long i = n_direct; i < node.n_below; ++i)
+        top_sum[top_slot[node.below[i]]] += e[i];
+    }
+
+
+
+    /// The backward substitution of supernode @p node: its unknowns of
+    /// @p y solved for, given those of the rows below. @p e has room for
+    /// the rows below.
+    void
+    backward_supernode(const Supernode &node, double *const y, double *const e)
+    {
+      double *const x = y + node.first;
+      for (long i = 0; i < node.n_below; ++i)
+        e[i] = y[node.below[i]];
+      // The columns left over by the groups of four are the last ones, so
+      // they come first here.
+      const long n_grouped = node.n_cols - node.n_cols % 4;
+      for (long j = node.n_cols; j-- > n_grouped;)
+        {
+          const double *const c   = node.column(j);
+          double              sum = 0.;
+          for (long i = j + 1; i < node.n_cols; ++i)
+            sum += c[i] * x[i];
+          for (long i = 0; i < node.n_below; ++i)
+            sum += c[node.n_cols + i] * e[i];
+          x[j] = (x[j] - sum) / c[j];
+        }
+      for (long j = n_grouped - 4; j >= 0; j -= 4)
+        {
+          const FourColumns c      = node.four_columns(j, 0);
+          double            sum[4] = {0., 0., 0., 0.};
+          add_four_dot_products(node.four_columns(j, j + 4),
+                                x + j + 4,
+                                node.n_cols - j - 4,
+                                sum);
+          add_four_dot_products(node.four_columns(j, node.n_cols),
+                                e,
+                                node.n_below,
+                                sum);
+          // The 4 x 4 upper triangle (the transposed diagonal block).
+          for (unsigned int q = 4; q-- > 0;)
+            {
+              for (unsigned int p = q + 1; p < 4; ++p)
+                sum[q] += c[q][j + p] * x[j + p];
+              x[j + q] = (x[j + q] - sum[q]) / c[q][j + q];
+            }
+        }
+    }
+
+
+
+    /// work(0) and work(1), at once in two threads or one after the other.
+    template <typename Work>
+    void
+    for_both_groups(const unsigned int n_threads, const Work &work)
+    {
+      if (n_threads >= 2)
+        {
+          // Should work(0) throw, the future's destructor waits for
+          // work(1).
+          std::future<void> other
+            = std::async(std::launch::async, [&work]() { work(1); });
+          work(0);
+          other.get();
+        }
+      else
+        {
+          work(0);
+          work(1);
+        }
+    }
+  } // namespace
+
+
+
+  // Forward: the two groups of subtrees (see SupernodePartition), each
+  // adding what it subtracts from the rows of the top into its own sums;
+  // then these sums, the first group's before the second's whatever the
+  // threads, and the top. The same operations in the same order with one
+  // thread or two, so the results are the same bits.
   void
-  SparseCholesky::forward_substitution() const
+  SparseCholesky::forward_substitution(const unsigned int n_threads) const
   {
     double *const y = permuted.data();
-    double *const e = below_values.data();
-    for (std::size_t s = 0; s < factor->nsuper; ++s)
+    for (auto &sums : top_sums)
+      std::fill(sums.begin(), sums.end(), 0.);
+    for_both_groups(n_threads, [&](const unsigned int g) {
+      for (const auto &[first, last] : partition.groups[g])
+        for (long s = first; s <= last; ++s)
+          forward_supernode(Supernode(*factor, s),
+                            y,
+                            below_values[g].data(),
+                            partition.rows_below_before_top[s],
+                            top_sums[g].data(),
+                            partition.top_slot.data());
+    });
+    for (std::size_t k = 0; k < partition.top_columns.size(); ++k)
       {
-        const Supernode node(*factor, s);
-        double *const   x = y + node.first;
-        // e collects minus the products of the rows below with x.
-        std::fill(e, e + node.n_below, 0.);
-        long j = 0;
-        for (; j + 4 <= node.n_cols; j += 4)
-          {
-            const FourColumns c = node.four_columns(j, 0);
-            // The 4 x 4 lower triangle on the diagonal.
-            for (unsigned int q = 0; q < 4; ++q)
-              {
-                x[j + q] /= c[q][j + q];
-                for (unsigned int p = q + 1; p < 4; ++p)
-                  x[j + p] -= c[q][j + p] * x[j + q];
-              }
-            subtract_four_columns(node.four_columns(j, j + 4),
-                                  x + j,
-                                  x + j + 4,
-                                  node.n_cols - j - 4);
-            subtract_four_columns(node.four_columns(j, node.n_cols),
-                                  x + j,
-                                  e,
-                                  node.n_below);
-          }
-        for (; j < node.n_cols; ++j)
-          {
-            const double *const c = node.column(j);
-            x[j] /= c[j];
-            for (long i = j + 1; i < node.n_cols; ++i)
-              x[i] -= c[i] * x[j];
-            for (long i = 0; i < node.n_below; ++i)
-              e[i] -= c[node.n_cols + i] * x[j];
-          }
-        for (long i = 0; i < node.n_below; ++i)
-          y[node.below[i]] += e[i];
+        y[partition.top_columns[k]] += top_sums[0][k];
+        y[partition.top_columns[k]] += top_sums[1][k];
       }
+    for (const long s : partition.top)
+      forward_supernode(Supernode(*factor, s),
+                        y,
+                        below_values[0].data(),
+                        partition.rows_below_before_top[s],
+                        nullptr,
+                        nullptr);
   }
 
 
 
+  // Backward: the top first, then the two groups, which only read the
+  // top's unknowns.
   void
-  SparseCholesky::backward_substitution() const
+  SparseCholesky::backward_substitution(const unsigned int n_threads) const
   {
     double *const y = permuted.data();
-    double *const e = below_values.data();
-    for (std::size_t s = factor->nsuper; s-- > 0;)
-      {
-        const Supernode node(*factor, s);
-        double *const   x = y + node.first;
-        for (long i = 0; i < node.n_below; ++i)
-          e[i] = y[node.below[i]];
-        // The columns left over by the groups of four are the last ones,
-        // so they come first here.
-        const long n_grouped = node.n_cols - node.n_cols % 4;
-        for (long j = node.n_cols; j-- > n_grouped;)
-          {
-            const double *const c   = node.column(j);
-            double              sum = 0.;
-            for (long i = j + 1; i < node.n_cols; ++i)
-              sum += c[i] * x[i];
-            for (long i = 0; i < node.n_below; ++i)
-              sum += c[node.n_cols + i] * e[i];
-            x[j] = (x[j] - sum) / c[j];
-          }
-        for (long j = n_grouped - 4; j >= 0; j -= 4)
-          {
-            const FourColumns c      = node.four_columns(j, 0);
-            double            sum[4] = {0., 0., 0., 0.};
-            add_four_dot_products(node.four_columns(j, j + 4),
-                                  x + j + 4,
-                                  node.n_cols - j - 4,
-                                  sum);
-            add_four_dot_products(node.four_columns(j, node.n_cols),
-                                  e,
-                                  node.n_below,
-                                  sum);
-            // The 4 x 4 upper triangle (the transposed diagonal block).
-            for (unsigned int q = 4; q-- > 0;)
-              {
-                for (unsigned int p = q + 1; p < 4; ++p)
-                  sum[q] += c[q][j + p] * x[j + p];
-                x[j + q] = (x[j + q] - sum[q]) / c[q][j + q];
-              }
-          }
-      }
+    for (auto t = partition.top.rbegin(); t != partition.top.rend(); ++t)
+      backward_supernode(Supernode(*factor, *t), y, below_values[0].data());
+    for_both_groups(n_threads, [&](const unsigned int g) {
+      const auto &ranges = partition.groups[g];
+      for (auto range = ranges.rbegin(); range != ranges.rend(); ++range)
+        for (long s = range->second; s >= range->first; --s)
+          backward_supernode(Supernode(*factor, s), y, below_values[g].data());
+    });
   }
 
 
@@ -447,5 +537,13 @@ namespace VPContact
   SparseCholesky::factor_nonzeros() const
   {
     return factor == nullptr ? 0. : common.lnz;
+  }
+
+
+
+  const SupernodePartition &
+  SparseCholesky::supernode_partition() const
+  {
+    return partition;
   }
 } // namespace VPContact

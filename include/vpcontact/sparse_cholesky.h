@@ -4,9 +4,12 @@
 #ifndef vpcontact_sparse_cholesky_h
 #define vpcontact_sparse_cholesky_h
 
+#include <vpcontact/supernode_partition.h>
+
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <array>
 #include <cholmod.h>
 #include <vector>
 
@@ -62,15 +65,24 @@ namespace VPContact
     factorize(const TrilinosWrappers::SparseMatrix &matrix,
               const unsigned int                    blas_threads);
 
-    /// dst = K^{-1} src.
+    /**
+     * dst = K^{-1} src. With @p n_threads = 2 the substitutions run on the
+     * two groups of subtrees of the elimination tree at once (see
+     * SupernodePartition); the result is the same bits as with one.
+     */
     void
     solve(TrilinosWrappers::MPI::Vector       &dst,
-          const TrilinosWrappers::MPI::Vector &src) const;
+          const TrilinosWrappers::MPI::Vector &src,
+          const unsigned int                   n_threads = 1) const;
 
     /// Number of nonzeros of the factor L: the fill that the ordering
     /// left (0 before the first factorize()).
     double
     factor_nonzeros() const;
+
+    /// How the substitutions split the supernodes (see solve()).
+    const SupernodePartition &
+    supernode_partition() const;
 
   private:
     void
@@ -78,17 +90,20 @@ namespace VPContact
 
     /// L^{-1} and L^{-T} applied in place to permuted.
     void
-    forward_substitution() const;
+    forward_substitution(const unsigned int n_threads) const;
     void
-    backward_substitution() const;
+    backward_substitution(const unsigned int n_threads) const;
 
     mutable cholmod_common common;
     cholmod_factor        *factor = nullptr;
-    /// The right-hand side and the solution in the order of L, and the
-    /// entries of a supernode's rows below its diagonal block, kept between
-    /// solves so that solve() allocates nothing.
-    mutable std::vector<double> permuted;
-    mutable std::vector<double> below_values;
+    SupernodePartition     partition;
+    /// The right-hand side and the solution in the order of L; for each
+    /// group of subtrees the entries of a supernode's rows below its
+    /// diagonal block, and what the group subtracts from the rows of the
+    /// top. Kept between solves so that solve() allocates nothing.
+    mutable std::vector<double>                permuted;
+    mutable std::array<std::vector<double>, 2> below_values;
+    mutable std::array<std::vector<double>, 2> top_sums;
   };
 } // namespace VPContact
 

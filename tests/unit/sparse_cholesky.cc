@@ -7,7 +7,8 @@
 // substitutions over the supernodes are the program's own (see
 // SparseCholesky::forward_substitution()), and this is where their blocks
 // of four columns, the columns left over, and the rows below the diagonal
-// blocks are all used. A matrix
+// blocks are all used; and in two threads, over the two groups of subtrees
+// of the elimination tree (SupernodePartition), to the same bits. A matrix
 // that is not positive definite is refused with a message that names the
 // column where the factorization broke down. The factorization may use two
 // BLAS threads (set_blas_threads()): it gives the same solution, and leaves
@@ -163,6 +164,30 @@ main(int argc, char **argv)
               << " grid: K x = K y, |x - y|_inf / |y|_inf "
               << (relative_error < 1e-10 ? "below 1e-10" :
                                            std::to_string(relative_error))
+              << std::endl;
+
+    // The substitutions in two threads, on the two groups of subtrees of
+    // the elimination tree: both groups must hold supernodes, and the
+    // result must be the same bits as in one thread.
+    const SupernodePartition &partition = cholesky_2d.supernode_partition();
+    std::cout << "2d Laplacian: supernodes in the two groups and the top: "
+              << (!partition.groups[0].empty() && !partition.groups[1].empty() ?
+                    "both groups hold some" :
+                    "a group is EMPTY")
+              << ", top " << (partition.top.empty() ? "EMPTY" : "not empty")
+              << std::endl;
+    TrilinosWrappers::MPI::Vector x_one(y_2d), x_two(y_2d);
+    cholesky_2d.solve(x_one, b_2d, 1);
+    cholesky_2d.solve(x_two, b_2d, 2);
+    bool same_bits = true;
+    for (unsigned int i = 0; i < m * m; ++i)
+      same_bits = same_bits && x_one(i) == x_two(i);
+    x_two -= y_2d;
+    std::cout << "2d Laplacian, two threads: the same bits as one thread: "
+              << (same_bits ? "yes" : "NO") << ", |x - y|_inf / |y|_inf "
+              << (x_two.linfty_norm() / y_2d.linfty_norm() < 1e-10 ?
+                    "below 1e-10" :
+                    std::to_string(x_two.linfty_norm() / y_2d.linfty_norm()))
               << std::endl;
   }
 
