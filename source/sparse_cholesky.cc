@@ -81,6 +81,100 @@ namespace VPContact
 
 
 
+  // The substitutions are our own rather than cholmod_solve()'s. CHOLMOD
+  // hands every supernode to the BLAS (dtrsv, dgemv), and OpenBLAS's dtrsv
+  // takes a lock and a buffer from its memory pool on every call: on the
+  // paper scene at 256^2 cells, a sixth of the time of a solve was spent
+  // there. With one right-hand side each entry of L is used once, so a
+  // solve is a stream through the factors and runs at the speed of the
+  // memory if each entry costs few instructions: the loops take four
+  // columns at a time, so that the entries they update or sum against are
+  // loaded once per four columns.
+  //
+  // A supernode s holds the columns Super[s], ..., Super[s+1]-1 of L as
+  // one dense block, by columns, whose first rows are these columns (the
+  // diagonal block, lower triangular) and the rest the rows Ls[Lpi[s]+i]
+  // below them.
+  namespace
+  {
+    /// Four columns of a block, from the same row on.
+    using FourColumns = std::array<const double *, 4>;
+
+    /// t[i] -= sum_q c[q][i] y[q] for i < n, q < 4.
+    inline void
+    subtract_four_columns(const FourColumns &c,
+                          const double       y[4],
+                          double            *t,
+                          const long         n)
+    {
+      for (long i = 0; i < n; ++i)
+        t[i] -= (c[0][i] * y[0] + c[1][i] * y[1])
+                + (c[2][i] * y[2] + c[3][i] * y[3]);
+    }
+
+    /// sum[q] += sum_i c[q][i] t[i] for i < n, q < 4.
+    inline void
+    add_four_dot_products(const FourColumns &c,
+                          const double      *t,
+                          const long         n,
+                          double             sum[4])
+    {
+      double s0 = 0., s1 = 0., s2 = 0., s3 = 0.;
+      for (long i = 0; i < n; ++i)
+        {
+          s0 += c[0][i] * t[i];
+          s1 += c[1][i] * t[i];
+          s2 += c[2][i] * t[i];
+          s3 += c[3][i] * t[i];
+        }
+      sum[0] += s0;
+      sum[1] += s1;
+      sum[2] += s2;
+      sum[3] += s3;
+    }
+
+    /// The block of supernode s of a factor: where its columns start in
+    /// the unknowns, how many columns and rows it has, its entries and the
+    /// rows below its diagonal block.
+    struct Supernode
+    {
+      Supernode(const cholmod_factor &factor, const std::size_t s)
+      {
+        const long *super = static_cast<const long *>(factor.super);
+        const long *pi    = static_cast<const long *>(factor.pi);
+        const long *px    = static_cast<const long *>(factor.px);
+        first             = super[s];
+        n_cols            = super[s + 1] - first;
+        n_rows            = pi[s + 1] - pi[s];
+        n_below           = n_rows - n_cols;
+        entries           = static_cast<const double *>(factor.x) + px[s];
+        below = static_cast<const long *>(factor.s) + pi[s] + n_cols;
+      }
+
+      const double *
+      column(const long j) const
+      {
+        return entries + j * n_rows;
+      }
+
+      /// Columns j, ..., j+3 from row @p row of the block on.
+      FourColumns
+      four_columns(const long j, const long row) const
+      {
+        return {{column(j) + row,
+                 column(j + 1) + row,
+                 column(j + 2) + row,
+                 column(j + 3) + row}};
+      }
+
+      long          first, n_cols, n_rows, n_below;
+      const double *entries;
+      const long   *below;
+    };
+  } // namespace
+
+
+
   void
   set_blas_threads(const unsigned int n_threads)
   {
@@ -217,12 +311,9 @@ namespace VPContact
     // vectors, allocated here so that solve() allocates nothing.
     partition = SupernodePartition(*factor);
     permuted.resize(n);
-    const long *pi         = static_cast<const long *>(factor->pi);
-    const long *super      = static_cast<const long *>(factor->super);
-    long        most_below = 0;
+    long most_below = 0;
     for (std::size_t s = 0; s < factor->nsuper; ++s)
-      most_below
-        = std::max(most_below, (pi[s + 1] - pi[s]) - (super[s + 1] - super[s]));
+      most_below = std::max(most_below, Supernode(*factor, s).n_below);
     for (unsigned int g = 0; g < 2; ++g)
       {
         below_values[g].resize(most_below);
@@ -239,10 +330,9 @@ namespace VPContact
   {
     Assert(factor != nullptr, ExcMessage("factorize() first"));
     // K^{-1} = P^T L^{-T} L^{-1} P: row k of the permuted system is row
-    // Perm[k] of K.
-    // On one process the local storage of the vectors is in the global
-    // order, so they are read and written through it, without an index
-    // lookup per entry.
+    // Perm[k] of K. On one process the local storage of the vectors is in
+    // the global order, so they are read and written through it, without
+    // an index lookup per entry.
     const long n = static_cast<long>(factor->n);
     Assert(static_cast<long>(src.locally_owned_size()) == n
              && static_cast<long>(dst.locally_owned_size()) == n,
@@ -257,100 +347,6 @@ namespace VPContact
     for (long k = 0; k < n; ++k)
       target[perm[k]] = permuted[k];
   }
-
-
-
-  // The substitutions are our own rather than cholmod_solve()'s. CHOLMOD
-  // hands every supernode to the BLAS (dtrsv, dgemv), and OpenBLAS's dtrsv
-  // takes a lock and a buffer from its memory pool on every call: on the
-  // paper scene at 256^2 cells, a sixth of the time of a solve was spent
-  // there. With one right-hand side each entry of L is used once, so a
-  // solve is a stream through the factors and runs at the speed of the
-  // memory if each entry costs few instructions: the loops take four
-  // columns at a time, so that the entries they update or sum against are
-  // loaded once per four columns.
-  //
-  // A supernode s holds the columns Super[s], ..., Super[s+1]-1 of L as
-  // one dense block, by columns, whose first rows are these columns (the
-  // diagonal block, lower triangular) and the rest the rows Ls[Lpi[s]+i]
-  // below them.
-  namespace
-  {
-    /// Four columns of a block, from the same row on.
-    using FourColumns = std::array<const double *, 4>;
-
-    /// t[i] -= sum_q c[q][i] y[q] for i < n, q < 4.
-    inline void
-    subtract_four_columns(const FourColumns &c,
-                          const double       y[4],
-                          double            *t,
-                          const long         n)
-    {
-      for (long i = 0; i < n; ++i)
-        t[i] -= (c[0][i] * y[0] + c[1][i] * y[1])
-                + (c[2][i] * y[2] + c[3][i] * y[3]);
-    }
-
-    /// sum[q] += sum_i c[q][i] t[i] for i < n, q < 4.
-    inline void
-    add_four_dot_products(const FourColumns &c,
-                          const double      *t,
-                          const long         n,
-                          double             sum[4])
-    {
-      double s0 = 0., s1 = 0., s2 = 0., s3 = 0.;
-      for (long i = 0; i < n; ++i)
-        {
-          s0 += c[0][i] * t[i];
-          s1 += c[1][i] * t[i];
-          s2 += c[2][i] * t[i];
-          s3 += c[3][i] * t[i];
-        }
-      sum[0] += s0;
-      sum[1] += s1;
-      sum[2] += s2;
-      sum[3] += s3;
-    }
-
-    /// The block of supernode s of a factor: where its columns start in
-    /// the unknowns, how many columns and rows it has, its entries and the
-    /// rows below its diagonal block.
-    struct Supernode
-    {
-      Supernode(const cholmod_factor &factor, const std::size_t s)
-      {
-        const long *super = static_cast<const long *>(factor.super);
-        const long *pi    = static_cast<const long *>(factor.pi);
-        const long *px    = static_cast<const long *>(factor.px);
-        first             = super[s];
-        n_cols            = super[s + 1] - first;
-        n_rows            = pi[s + 1] - pi[s];
-        n_below           = n_rows - n_cols;
-        entries           = static_cast<const double *>(factor.x) + px[s];
-        below = static_cast<const long *>(factor.s) + pi[s] + n_cols;
-      }
-
-      const double *
-      column(const long j) const
-      {
-        return entries + j * n_rows;
-      }
-
-      /// Columns j, ..., j+3 from row @p row of the block on.
-      FourColumns
-      four_columns(const long j, const long row) const
-      {
-        return {{column(j) + row,
-                 column(j + 1) + row,
-                 column(j + 2) + row,
-                 column(j + 3) + row}};
-      }
-
-      long          first, n_cols, n_rows, n_below;
-      const double *entries;
-      const long   *below;
-    };
-  } // namespace
 
 
 
