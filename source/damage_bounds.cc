@@ -125,19 +125,27 @@ namespace VPContact
     // (Q1 cells of aspect ratio up to about 1.4) these are negative, so the
     // sum is nonzero exactly on the neighbours; elsewhere a neighbour may
     // be missed, which costs only the iteration this was to save. The
-    // product also reaches across ranks.
-    TrilinosWrappers::MPI::Vector marks(matrix.locally_owned_domain_indices(),
-                                        communicator);
-    TrilinosWrappers::MPI::Vector reach(marks);
+    // product also reaches across ranks. The two vectors are kept (fresh ones
+    // cost their page faults at every call, two or more per step) and are read
+    // and written by position.
+    const IndexSet owned_rows = matrix.locally_owned_domain_indices();
+    if (front_marks.size() != matrix.n()
+        || front_marks.locally_owned_elements() != owned_rows)
+      {
+        front_marks.reinit(owned_rows, communicator);
+        front_reach.reinit(owned_rows, communicator);
+      }
+    front_marks         = 0.;
+    double *const marks = front_marks.begin();
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (owned[i] && status[i] != BoundStatus::upper)
-        marks(dofs[i]) = 1.;
-    marks.compress(VectorOperation::insert);
-    matrix.vmult(reach, marks);
-    std::vector<bool> on_front(dofs.size(), false);
+        marks[owned_position[i]] = 1.;
+    matrix.vmult(front_reach, front_marks);
+    const double *const reach = front_reach.begin();
+    std::vector<bool>   on_front(dofs.size(), false);
     for (unsigned int i = 0; i < dofs.size(); ++i)
-      on_front[i]
-        = (owned[i] && status[i] == BoundStatus::upper && reach(dofs[i]) != 0.);
+      on_front[i] = (owned[i] && status[i] == BoundStatus::upper
+                     && reach[owned_position[i]] != 0.);
     return on_front;
   }
 

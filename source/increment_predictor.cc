@@ -1,5 +1,6 @@
 // The section "Solver" entry for the start vector of the displacement
 // solve, and its extrapolation in time.
+#include <vpcontact/ghost_exchange.h>
 #include <vpcontact/increment_predictor.h>
 
 #include <algorithm>
@@ -54,12 +55,12 @@ namespace VPContact
     const unsigned int p = std::min(degree, n_valid > 0 ? n_valid - 1 : 0u);
     if (p == 1)
       {
-        increment = history[0];
+        copy_owned_values(history[0], increment);
         increment.sadd(2., -1., history[1]);
       }
     else if (p == 2)
       {
-        increment = history[2];
+        copy_owned_values(history[2], increment);
         increment.add(3., history[0], -3., history[1]);
       }
   }
@@ -74,8 +75,8 @@ namespace VPContact
     // Shift the history by swapping the vectors, not copying them.
     history[2].swap(history[1]);
     history[1].swap(history[0]);
-    history[0] = increment;
-    n_valid    = std::min(n_valid + 1, 3u);
+    copy_owned_values(increment, history[0]);
+    n_valid = std::min(n_valid + 1, 3u);
   }
 
 

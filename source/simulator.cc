@@ -1,6 +1,7 @@
 // The simulator's parameters, construction, and time loop: the steps of the
 // paper's scheme (14) in order.
 #include <vpcontact/input_error.h>
+#include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/timer.h>
@@ -371,7 +372,7 @@ namespace VPContact
             = solving.valid() ?
                 solving.get() :
                 linear_solver.solve(stiffness_matrix, increment_owned, rhs);
-          constraints.distribute(increment_owned);
+          distribute_constraints(constraints, increment_owned);
         }
         increment_exchange.copy(increment_owned, increment);
         if (!friction_active)

@@ -335,7 +335,7 @@ namespace VPContact
         residual_assembly.add(dof_indices, cell_residual);
       }
     residual_assembly.compress(VectorOperation::add);
-    residual = residual_assembly;
+    residual_exchange.copy(residual_assembly, residual);
   }
 
 

@@ -366,7 +366,7 @@ namespace VPContact
                                                  damage_load_assembly);
         }
     damage_load_assembly.compress(VectorOperation::add);
-    damage_load = damage_load_assembly;
+    copy_owned_values(damage_load_assembly, damage_load);
   }
 
 
@@ -531,7 +531,7 @@ namespace VPContact
                         linear_solver.iteration_limit());
     damage_change += bound_change;
     damage_system.distribute_hanging_nodes(damage_change);
-    damage_owned = damage_old;
+    copy_owned_values(damage_old, damage_owned);
     damage_owned += damage_change;
     damage_exchange.copy(damage_owned, damage);
 

@@ -2,6 +2,7 @@
 // Newton iteration whose stress comes from a local Newton solve at every
 // quadrature point, for laws too fast for the paper's explicit step.
 #include <vpcontact/input_error.h>
+#include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -139,7 +140,7 @@ namespace VPContact
           last_linear_iterations
             += linear_solver.solve(stiffness_matrix, newton_update, rhs);
         }
-        constraints.distribute(newton_update);
+        distribute_constraints(constraints, newton_update);
         last_update = newton_update.l2_norm();
         increment_owned += newton_update;
         increment_exchange.copy(increment_owned, increment);

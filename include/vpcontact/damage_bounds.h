@@ -153,8 +153,11 @@ namespace VPContact
     /// The owned upper nodes with a neighbour below 1 (one matrix-vector
     /// product with @p matrix).
     std::vector<bool>
-             front(const TrilinosWrappers::SparseMatrix &matrix) const;
-    MPI_Comm communicator = MPI_COMM_WORLD;
+    front(const TrilinosWrappers::SparseMatrix &matrix) const;
+    /// The marks of front() and their product with the matrix, kept.
+    mutable TrilinosWrappers::MPI::Vector front_marks;
+    mutable TrilinosWrappers::MPI::Vector front_reach;
+    MPI_Comm                              communicator = MPI_COMM_WORLD;
   };
 } // namespace VPContact
 

@@ -365,6 +365,7 @@ namespace VPContact
     GhostExchange increment_exchange;
     GhostExchange damage_exchange;
     GhostExchange damage_residual_exchange;
+    GhostExchange residual_exchange;
     /// A Newton correction of the implicit step (owned).
     TrilinosWrappers::MPI::Vector newton_update;
 

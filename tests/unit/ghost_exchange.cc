@@ -3,7 +3,9 @@
 // is i + 0.5 (then 2 i + 0.25 in a second copy with the kept import); every
 // rank owns a contiguous half and reads a band of its neighbour's entries as
 // ghosts. Then the ghosted vector gets a wider band (a new layout), and the
-// exchange must notice and build a new import.
+// exchange must notice and build a new import. The exchange then serves two
+// owned vectors with layouts of their own in turn (it keeps both pairs), and
+// copy_owned_values() copies between two such owned vectors.
 #include <vpcontact/ghost_exchange.h>
 
 #include <deal.II/base/mpi.h>
@@ -85,4 +87,28 @@ main(int argc, char **argv)
   exchange.copy(owned_vector, wider);
   report("into a wider ghosted layout",
          largest_error(wider, relevant, second, comm));
+
+  // A second owned vector, initialized on its own from the same index set,
+  // copied into the same ghosted vector in turn with the first.
+  TrilinosWrappers::MPI::Vector other_owned(owned, comm);
+  const auto third = [](const unsigned int i) { return 3. * i - 1.; };
+  for (const auto i : owned)
+    other_owned[i] = third(i);
+  other_owned.compress(VectorOperation::insert);
+  double error = 0.;
+  for (unsigned int round = 0; round < 3; ++round)
+    {
+      exchange.copy(other_owned, wider);
+      error = std::max(error, largest_error(wider, relevant, third, comm));
+      exchange.copy(owned_vector, wider);
+      error = std::max(error, largest_error(wider, relevant, second, comm));
+    }
+  report("two owned vectors in turn", error);
+
+  TrilinosWrappers::MPI::Vector copy(owned, comm);
+  copy_owned_values(other_owned, copy);
+  error = 0.;
+  for (const auto i : owned)
+    error = std::max(error, std::abs(copy[i] - third(i)));
+  report("copy_owned_values", Utilities::MPI::max(error, comm));
 }
