@@ -1,6 +1,7 @@
 // The damage problem's linear algebra on the damage degrees of freedom alone.
 #include <vpcontact/damage_system.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/owned_constraints.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -278,7 +279,7 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector &owned_vector) const
   {
     if (has_hanging_nodes)
-      constraints.distribute(owned_vector);
+      distribute_constraints(constraints, owned_vector);
   }
 
 

@@ -20,7 +20,8 @@ namespace VPContact
    * call, a hash lookup per index, even where every constraint reads only
    * entries the rank owns (Dirichlet and contact constraints, or any
    * constraint on one rank). The displacement increment is distributed
-   * once per solve. Here the constraints are read from the owned entries
+   * once per solve, the damage change (where the mesh has hanging nodes)
+   * once per damage solve. Here the constraints are read from the owned entries
    * in place when on every rank they read only owned entries (one
    * reduction decides); otherwise distribute() runs as before. Closed
    * constraints read only unconstrained entries, so the order of the
