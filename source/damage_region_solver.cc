@@ -15,11 +15,11 @@ namespace VPContact
   void
   DamageRegionSolver::initialize(const TrilinosWrappers::SparseMatrix &matrix,
                                  const IndexSet                       &owned,
-                                 const MPI_Comm communicator_in,
-                                 const bool     modified_in)
+                                 const MPI_Comm       communicator_in,
+                                 const Preconditioner kind_in)
   {
     communicator  = communicator_in;
-    modified      = modified_in;
+    kind          = kind_in;
     serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
     n_owned       = owned.n_elements();
     // The ghosted layout the products read: the owned entries and every
@@ -238,6 +238,15 @@ namespace VPContact
           entry_in_rows[next[j]++] = e;
         }
 
+    if (kind == Preconditioner::diagonal)
+      {
+        // The sweeps use K's own entries: L^T by rows with K's values.
+        upper_value.resize(factor_value.size());
+        for (unsigned int c = 0; c < entry_in_rows.size(); ++c)
+          upper_value[c] = factor_value[entry_in_rows[c]];
+        prepare_diagonal_preconditioner();
+        return;
+      }
     factorize_by_columns(entry_in_rows);
 
     // Multiplications instead of divisions in the two sweeps, which run in
@@ -269,8 +278,9 @@ namespace VPContact
     // meshes (squares; M_L/k adds to the diagonal), the pivots of both stay
     // positive. Should one not, the diagonal of K is kept for it, which
     // still gives an SPD preconditioner.
-    const double        lumping = (modified ? 1. : 0.);
-    const unsigned int  n       = factor_diagonal.size();
+    const double lumping
+      = (kind == Preconditioner::modified_incomplete_cholesky ? 1. : 0.);
+    const unsigned int  n = factor_diagonal.size();
     std::vector<double> diagonal_of_k(factor_diagonal);
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -425,6 +435,8 @@ namespace VPContact
                             const unsigned int                   max_iterations)
   {
     select_free_nodes(held);
+    if (kind == Preconditioner::diagonal)
+      return solve_eisenstat(b_vector, x_vector, tolerance, max_iterations);
     const double *b = b_vector.begin();
     double       *x = x_vector.begin();
     double       *p = direction.begin();

@@ -1,6 +1,7 @@
 // CG for the damage problem on the free nodes only, preconditioned by an
 // incomplete Cholesky factorization of the matrix restricted to a region
-// around them: the work of an iteration follows the free set, not the mesh.
+// around them (or its diagonal variant, applied with Eisenstat's trick):
+// the work of an iteration follows the free set, not the mesh.
 #ifndef vpcontact_damage_region_solver_h
 #define vpcontact_damage_region_solver_h
 
@@ -41,6 +42,15 @@ namespace VPContact
    * resumed from a checkpoint computes the same bits. Built over all nodes
    * it is the (M)IC(0) of this rank's block of K.
    *
+   * The third preconditioner, Preconditioner::diagonal (see
+   * solve_eisenstat()), is P = (D + L) D^{-1} (D + L^T) with L the
+   * strictly lower part of K_RR itself and D a diagonal that keeps the row
+   * sums. Since its triangular factors hold K's own entries, Eisenstat's
+   * trick runs CG on (D + L)^{-1} K (D + L^T)^{-1} at the cost of the two
+   * sweeps alone: no separate matrix-vector product and no factor besides
+   * K, about a third less memory traffic per iteration than (M)IC(0),
+   * for a few more iterations.
+   *
    * The vectors are Trilinos vectors of the owned compact damage entries
    * (see DamageSystem); positions below are positions in their local
    * storage.
@@ -48,19 +58,28 @@ namespace VPContact
   class DamageRegionSolver
   {
   public:
+    /// The preconditioner on the region (see the class documentation).
+    enum class Preconditioner
+    {
+      /// IC(0) of K_RR.
+      incomplete_cholesky,
+      /// MIC(0) of K_RR (see factorize_by_columns()).
+      modified_incomplete_cholesky,
+      /// (D + L) D^{-1} (D + L^T), D keeping the row sums, with
+      /// Eisenstat's trick (see solve_eisenstat()).
+      diagonal
+    };
+
     /**
      * Keep the owned rows (@p owned) of @p matrix as a local CSR matrix,
      * with the columns as positions in a ghosted vector over them (and,
      * for the region, as owned positions). Once per mesh and step size.
-     * With @p modified the preconditioner is the modified incomplete
-     * Cholesky factorization MIC(0) instead of IC(0) (see
-     * factorize_by_columns()).
      */
     void
     initialize(const TrilinosWrappers::SparseMatrix &matrix,
                const IndexSet                       &owned,
                const MPI_Comm                        communicator,
-               const bool                            modified);
+               const Preconditioner                  kind);
 
     /// Forget the region: the next solve builds it from its free set.
     void
@@ -108,6 +127,41 @@ namespace VPContact
     void
     factorize_by_columns(const std::vector<unsigned int> &entry_in_rows);
 
+    /// D of Preconditioner::diagonal on K_RR, and the entries of the region
+    /// rows in ghost columns (for the coupling between ranks).
+    void
+    prepare_diagonal_preconditioner();
+
+    /// solve() with Preconditioner::diagonal, on the free set selected.
+    unsigned int
+    solve_eisenstat(const TrilinosWrappers::MPI::Vector &b,
+                    TrilinosWrappers::MPI::Vector       &x,
+                    const double                         tolerance,
+                    const unsigned int                   max_iterations);
+
+    /// The diagonals of the sweeps for the current free set (zero off it).
+    void
+    mask_diagonal();
+
+    /// y = (D + L)^{-1} (src + shift) on R (forward sweep), and w = the
+    /// product of (D + L) with t + y (see solve_eisenstat()); returns the
+    /// local part of src . (t + y). With @p t null only y.
+    double
+    forward_sweep(const double *src, const double *t, double *y, double *w);
+
+    /// t = (D + L^T)^{-1} (D_F rh + beta src) on R, where src is updated
+    /// to that argument first (backward sweep, see solve_eisenstat()).
+    void
+    backward_sweep(const double *rh, double *src, const double beta, double *t);
+
+    /// off = K_off t, the coupling to other ranks' free nodes.
+    void
+    add_off_rank_coupling(const std::vector<double> &t);
+
+    /// Sum over the ranks of two numbers at once.
+    std::pair<double, double>
+    global_sums(const double a, const double b) const;
+
     /// dst = K src on the free rows (src vanishes off F); returns the local
     /// part of p . dst over F for @p p in the owned layout (see solve()).
     double
@@ -144,8 +198,7 @@ namespace VPContact
     /// Owned position of each ghosted position (or -1 for a ghost).
     std::vector<int> owned_of_ghosted;
     unsigned int     n_owned = 0;
-    /// MIC(0) instead of IC(0).
-    bool modified = true;
+    Preconditioner   kind    = Preconditioner::modified_incomplete_cholesky;
 
     // The free set of the current solve.
     std::vector<bool>         is_free;
@@ -168,6 +221,28 @@ namespace VPContact
     std::vector<double>       inverse_diagonal;
     bool                      region_valid = false;
     unsigned int              builds       = 0;
+
+    // Preconditioner::diagonal: D and 1/D on R, the diagonal of K_RR, and
+    // per solve D, 1/D and K_kk - 2 D on F (zero on R \ F); the entries of
+    // the region rows in ghost columns; the vectors of the transformed CG
+    // (region indices).
+    std::vector<double>       sweep_diagonal;
+    std::vector<double>       sweep_inverse;
+    std::vector<double>       diagonal_of_k;
+    std::vector<double>       masked_diagonal;
+    std::vector<double>       masked_inverse;
+    std::vector<double>       masked_shift;
+    std::vector<unsigned int> ghost_start;
+    std::vector<unsigned int> ghost_column;
+    std::vector<double>       ghost_value;
+    std::vector<double>       off_rank;
+    std::vector<double>       hat_residual;
+    std::vector<double>       hat_direction;
+    std::vector<double>       hat_update;
+    std::vector<double>       sweep_t;
+    std::vector<double>       sweep_s;
+    std::vector<double>       residual_change;
+    std::vector<double>       true_residual;
 
     // Work vectors (owned positions; zero off F between solves) and the
     // search direction as a Trilinos vector, for the ghost exchange.

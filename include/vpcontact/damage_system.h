@@ -50,6 +50,7 @@ namespace VPContact
   public:
     enum class Preconditioner
     {
+      modified_diagonal_incomplete_cholesky,
       modified_incomplete_cholesky,
       incomplete_cholesky,
       amg
@@ -218,7 +219,7 @@ namespace VPContact
     bool has_hanging_nodes = false;
 
     Preconditioner preconditioner_kind
-      = Preconditioner::modified_incomplete_cholesky;
+      = Preconditioner::modified_diagonal_incomplete_cholesky;
     TrilinosWrappers::SparseMatrix                      system_matrix;
     std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
     /// K x for vectors x that vanish at most nodes.

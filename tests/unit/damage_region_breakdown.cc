@@ -19,6 +19,23 @@
 
 using namespace VPContact;
 
+namespace
+{
+  const char *
+  name(const DamageRegionSolver::Preconditioner kind)
+  {
+    switch (kind)
+      {
+        case DamageRegionSolver::Preconditioner::incomplete_cholesky:
+          return "IC(0)";
+        case DamageRegionSolver::Preconditioner::modified_incomplete_cholesky:
+          return "MIC(0)";
+        default:
+          return "modified diagonal IC (Eisenstat)";
+      }
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
@@ -41,10 +58,13 @@ main(int argc, char **argv)
         matrix.set(i, j, kershaw[i][j]);
   matrix.compress(VectorOperation::insert);
 
-  for (const bool modified : {false, true})
+  for (const auto kind :
+       {DamageRegionSolver::Preconditioner::incomplete_cholesky,
+        DamageRegionSolver::Preconditioner::modified_incomplete_cholesky,
+        DamageRegionSolver::Preconditioner::diagonal})
     {
       DamageRegionSolver solver;
-      solver.initialize(matrix, all, comm, modified);
+      solver.initialize(matrix, all, comm, kind);
       solver.begin_step();
 
       for (const bool hold_node_1 : {false, true})
@@ -69,7 +89,7 @@ main(int argc, char **argv)
           double             error      = 0;
           for (unsigned int i = 0; i < 4; ++i)
             error = std::max(error, std::abs(x(i) - exact(i)));
-          std::cout << (modified ? "MIC(0), " : "IC(0), ")
+          std::cout << name(kind) << ", "
                     << (hold_node_1 ? "node 1 held" : "no node held")
                     << ": |x - x*| below 1e-9: "
                     << (error < 1e-9 ? "yes" : "no")
@@ -84,7 +104,7 @@ main(int argc, char **argv)
       for (unsigned int i = 0; i < 4; ++i)
         x(i) = 1. + i;
       const unsigned int iterations = solver.solve(b, x, {}, 1e-12, 100);
-      std::cout << (modified ? "MIC(0), " : "IC(0), ")
+      std::cout << name(kind) << ", "
                 << "b = 0: x = 0: " << (x.linfty_norm() == 0. ? "yes" : "no")
                 << ", CG iterations " << iterations << std::endl;
     }

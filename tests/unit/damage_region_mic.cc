@@ -15,6 +15,23 @@
 
 using namespace VPContact;
 
+namespace
+{
+  const char *
+  name(const DamageRegionSolver::Preconditioner kind)
+  {
+    switch (kind)
+      {
+        case DamageRegionSolver::Preconditioner::incomplete_cholesky:
+          return "IC(0)";
+        case DamageRegionSolver::Preconditioner::modified_incomplete_cholesky:
+          return "MIC(0)";
+        default:
+          return "modified diagonal IC (Eisenstat)";
+      }
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
@@ -58,10 +75,13 @@ main(int argc, char **argv)
         matrix.set(i, j, K[i][j]);
   matrix.compress(VectorOperation::insert);
 
-  for (const bool modified : {true, false})
+  for (const auto kind :
+       {DamageRegionSolver::Preconditioner::modified_incomplete_cholesky,
+        DamageRegionSolver::Preconditioner::incomplete_cholesky,
+        DamageRegionSolver::Preconditioner::diagonal})
     {
       DamageRegionSolver solver;
-      solver.initialize(matrix, all, comm, modified);
+      solver.initialize(matrix, all, comm, kind);
       solver.begin_step();
       TrilinosWrappers::MPI::Vector b(all, comm), x(all, comm);
       for (unsigned int i = 0; i < nodes; ++i)
@@ -75,7 +95,7 @@ main(int argc, char **argv)
       double             error      = 0;
       for (unsigned int i = 0; i < nodes; ++i)
         error = std::max(error, std::abs(x(i) - 1.));
-      std::cout << (modified ? "MIC(0)" : "IC(0)")
+      std::cout << name(kind)
                 << ": |x - 1| below 1e-10: " << (error < 1e-10 ? "yes" : "no")
                 << ", CG iterations: "
                 << (iterations == 1 ? "1" :
