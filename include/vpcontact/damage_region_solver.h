@@ -28,7 +28,8 @@ namespace VPContact
    * - the matrix-vector product visits the rows of the free nodes (the
    *   search directions vanish elsewhere, so the columns of held nodes add
    *   nothing);
-   * - the preconditioner is MIC(0) or IC(0) of K_RR, the matrix restricted to a
+   * - the preconditioner is MIC(0) or IC(0) of K_RR (or the diagonal
+   *   variant below), K_RR being the matrix restricted to a
    *   region R of this rank's nodes that holds the free nodes and a margin
    *   of rings of neighbours around them, applied to vectors that vanish
    *   on R minus the free nodes, with the result masked alike. That is a
