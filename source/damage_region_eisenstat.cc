@@ -46,22 +46,36 @@ namespace VPContact
     // The entries of the region's rows in columns of other ranks: P is
     // built from this rank's rows alone (block Jacobi between ranks, as
     // for (M)IC(0)), so K = C + C^T + (K_kk - 2 D) + K_off, and the
-    // product needs K_off apart.
+    // product needs K_off apart. Only the rows along the cut between the
+    // ranks have such entries, and only the owned entries that the import
+    // sends to other ranks need t: both are listed here, so that an
+    // iteration touches the cut and not the whole region.
+    coupled_rows.clear();
     ghost_start.assign(1, 0);
     ghost_column.clear();
     ghost_value.clear();
+    exported.clear();
     if (!serial_layout)
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          const unsigned int i = region[k];
-          for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
-            if (owned_of_ghosted[column[e]] < 0)
+      {
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const unsigned int i = region[k];
+            for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
+              if (owned_of_ghosted[column[e]] < 0)
+                {
+                  ghost_column.push_back(column[e]);
+                  ghost_value.push_back(value[e]);
+                }
+            if (ghost_column.size() > ghost_start.back())
               {
-                ghost_column.push_back(column[e]);
-                ghost_value.push_back(value[e]);
+                coupled_rows.push_back(k);
+                ghost_start.push_back(ghost_column.size());
               }
-          ghost_start.push_back(ghost_column.size());
-        }
+          }
+        const int *const export_lids = importer->ExportLIDs();
+        for (int e = 0; e < importer->NumExportIDs(); ++e)
+          exported.emplace_back(export_lids[e], region_index[export_lids[e]]);
+      }
 
     for (auto *v : {&masked_diagonal,
                     &masked_inverse,
@@ -170,22 +184,24 @@ namespace VPContact
   void
   DamageRegionSolver::add_off_rank_coupling(const std::vector<double> &t)
   {
-    // t into the owned layout (it vanishes off F, and so off R), its
-    // ghosts from the other ranks, then K_off t on the region's rows.
-    double *const      owned = direction.begin();
-    const unsigned int n     = region.size();
-    for (unsigned int k = 0; k < n; ++k)
-      owned[region[k]] = t[k];
+    // The entries of t that other ranks read into the owned layout (t
+    // vanishes off F, and so off R), their ghosts from the other ranks,
+    // then K_off t on the rows along the cut (off_rank stays zero on the
+    // others).
+    double *const owned = direction.begin();
+    for (const auto &[position, k] : exported)
+      owned[position] = (k >= 0 ? t[k] : 0.);
     const int error
       = direction_ghosted.trilinos_vector().Import(direction.trilinos_vector(),
                                                    *importer,
                                                    Insert);
     AssertThrow(error == 0, ExcTrilinosError(error));
     const double *const ghosted = direction_ghosted.begin();
-    for (unsigned int k = 0; k < n; ++k)
+    for (unsigned int c = 0; c < coupled_rows.size(); ++c)
       {
-        double s = 0;
-        for (unsigned int e = ghost_start[k]; e < ghost_start[k + 1]; ++e)
+        const unsigned int k = coupled_rows[c];
+        double             s = 0;
+        for (unsigned int e = ghost_start[c]; e < ghost_start[c + 1]; ++e)
           s += ghost_value[e] * ghosted[ghost_column[e]];
         off_rank[k] = s * (masked_inverse[k] != 0. ? 1. : 0.);
       }
@@ -317,9 +333,8 @@ namespace VPContact
       }
     for (unsigned int k = 0; k < n; ++k)
       x[region[k]] += t[k];
-    if (!serial_layout)
-      for (unsigned int k = 0; k < n; ++k)
-        p[region[k]] = 0.;
+    for (const auto &entry : exported)
+      p[entry.first] = 0.;
     return iteration;
   }
 } // namespace VPContact

@@ -225,25 +225,29 @@ namespace VPContact
 
     // Preconditioner::diagonal: D and 1/D on R, the diagonal of K_RR, and
     // per solve D, 1/D and K_kk - 2 D on F (zero on R \ F); the entries of
-    // the region rows in ghost columns; the vectors of the transformed CG
-    // (region indices).
+    // the region rows along the cut in ghost columns; the vectors of the
+    // transformed CG (region indices).
     std::vector<double>       sweep_diagonal;
     std::vector<double>       sweep_inverse;
     std::vector<double>       diagonal_of_k;
     std::vector<double>       masked_diagonal;
     std::vector<double>       masked_inverse;
     std::vector<double>       masked_shift;
+    std::vector<unsigned int> coupled_rows;
     std::vector<unsigned int> ghost_start;
     std::vector<unsigned int> ghost_column;
     std::vector<double>       ghost_value;
-    std::vector<double>       off_rank;
-    std::vector<double>       hat_residual;
-    std::vector<double>       hat_direction;
-    std::vector<double>       hat_update;
-    std::vector<double>       sweep_t;
-    std::vector<double>       sweep_s;
-    std::vector<double>       residual_change;
-    std::vector<double>       true_residual;
+    /// The owned positions the import sends to other ranks, with their
+    /// region index (or -1).
+    std::vector<std::pair<unsigned int, int>> exported;
+    std::vector<double>                       off_rank;
+    std::vector<double>                       hat_residual;
+    std::vector<double>                       hat_direction;
+    std::vector<double>                       hat_update;
+    std::vector<double>                       sweep_t;
+    std::vector<double>                       sweep_s;
+    std::vector<double>                       residual_change;
+    std::vector<double>                       true_residual;
 
     // Work vectors (owned positions; zero off F between solves) and the
     // search direction as a Trilinos vector, for the ghost exchange.
