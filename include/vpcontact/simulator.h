@@ -435,7 +435,11 @@ namespace VPContact
     /// step, which then needs no FEValues and no index lookups.
     std::vector<double>       damage_cell_mass;
     std::vector<unsigned int> damage_cell_positions;
-    unsigned int              last_damage_iterations = 0;
+    /// The same nodes' positions in the owned vector damage_load, for the
+    /// cells whose damage nodes are all owned and not hanging (whose load
+    /// goes there directly); -1 in the first entry of the other cells.
+    std::vector<int> damage_cell_owned;
+    unsigned int     last_damage_iterations = 0;
     /// How many whole rings of nodes the front of the upper damage bound
     /// moved in the previous step (DamageBounds::rings_moved()): the next
     /// step frees as many ahead of it.
