@@ -7,6 +7,7 @@ TimerOutput table), peak memory, and the floor measured in the same run (one
 displacement solve with everything reused) with the ratio step/floor.
 
 Usage: bench.py VPCONTACT [SIZE ...]   (from the repository root)"""
+import csv
 import os
 import platform
 import re
@@ -56,6 +57,13 @@ end
                         r"(?:preconditioner application|solve with the "
                         r"factors) ([0-9.e+-]+) ms", out)
     memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
+    # The friction active-set iterations and the linear iterations of every
+    # step (CG iterations, or solves with the factors), from the run's
+    # statistics.csv, averaged over the steps.
+    with open(f"results/bench_{tag}/statistics.csv") as f:
+        rows = [r for r in csv.DictReader(f) if int(r["step"]) > 0]
+    active_set = sum(int(r["active_set_iterations"]) for r in rows) / len(rows)
+    linear = sum(int(r["linear_iterations"]) for r in rows) / len(rows)
     if solver == "Cholesky" and not background:
         solver = "Cholesky, one thread"
     return dict(size=size, ranks=ranks, solver=solver, total=total,
@@ -66,7 +74,8 @@ end
                 else "factors",
                 dofs=int(floor.group(3)),
                 matvec=float(kernels.group(1)), vcycle=float(kernels.group(2)),
-                memory=int(memory.group(1)) / 1024 if memory else float("nan"))
+                memory=int(memory.group(1)) / 1024 if memory else float("nan"),
+                active_set=active_set, linear=linear)
 
 
 def bandwidth():
@@ -157,10 +166,15 @@ or the factorization (once per run, since the stick set does not change) is
 in them, spread over the 100 steps; the mesh and dof setup is in the total
 only. Where the solves with the factors run beside the damage step,
 "displacement: solve" is the time the damage step did not hide.
+The iterations per step are averages over the 100 steps of the columns
+`active_set_iterations` and `linear_iterations` of the run's
+`statistics.csv`: the stick/slip iterations of the friction solve, and
+the CG iterations summed over them (with Cholesky, the solves with the
+factors).
 
 | cells | ranks | solver | dofs | total [s] | per step [ms] | floor [ms] | step / floor | """ +
-              " | ".join(g for g, _ in groups) + """ | damage solves per step | peak memory rank 0 [MB] |
-|---|---|---|---|---|---|---|---|""" + "---|" * len(groups) + "---|---|\n")
+              " | ".join(g for g, _ in groups) + """ | friction active-set iterations per step | displacement linear iterations per step | damage solves per step | peak memory rank 0 [MB] |
+|---|---|---|---|---|---|---|---|""" + "---|" * len(groups) + "---|---|---|---|\n")
     for r in results + cholesky + [sequential]:
         per_step = 1000 * sum(v for k, v in r["phases"].items()
                               if k not in ("Setup",)) / steps
@@ -172,6 +186,7 @@ only. Where the solves with the factors run beside the damage step,
                   f"{1000 * r['floor']:.1f} ({r['floor_its']}) | "
                   f"{per_step / (1000 * r['floor']):.2f} | " +
                   " | ".join(f"{c:.1f}" for c in cells) +
+                  f" | {r['active_set']:.2f} | {r['linear']:.1f}"
                   f" | {r['damage_solves']:.1f} | {r['memory']:.0f} |\n")
     serial = [r for r in results if r["ranks"] == 1]
     for name, runs in (("CG + AMG", serial), ("Cholesky", cholesky)):

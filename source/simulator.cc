@@ -343,6 +343,7 @@ namespace VPContact
     // the start (warm start). The matrix changes only when a node enters or
     // leaves the stick set; then it is reassembled with the new constraints.
     last_active_set_iterations = 0;
+    last_linear_iterations     = 0;
     // The first start vector: the increments of the last steps
     // extrapolated (see IncrementPredictor); the active-set iterations of
     // a step then start from the previous iterate.
@@ -369,9 +370,9 @@ namespace VPContact
             }
           TimerOutput::Scope t(computing_timer, "Solve");
           last_linear_iterations
-            = solving.valid() ?
-                solving.get() :
-                linear_solver.solve(stiffness_matrix, increment_owned, rhs);
+            += solving.valid() ?
+                 solving.get() :
+                 linear_solver.solve(stiffness_matrix, increment_owned, rhs);
           distribute_constraints(constraints, increment_owned);
         }
         increment_exchange.copy(increment_owned, increment);
