@@ -359,9 +359,9 @@ namespace VPContact
     // The cells whose nodes are all owned and not hanging (all of them on
     // one rank without hanging nodes) add their load to the owned vector
     // by position, in the order of the cells, as distribute_local_to_global
-    // did, without its index lookups (256^2 cells, 100 steps: see the
-    // notes); the others go through the constraints and the ghosted
-    // assembly vector, whose owned part is then added.
+    // did, without its index lookups (512^2 cells, 100 steps: damage
+    // assembly 2.0 s -> 1.5 s); the others go through the constraints and
+    // the ghosted assembly vector, whose owned part is then added.
     damage_load          = 0.;
     damage_load_assembly = 0.;
     double *const load   = damage_load.begin();
