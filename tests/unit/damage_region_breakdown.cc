@@ -10,31 +10,16 @@
 #include <vpcontact/damage_region_solver.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
 #include <iostream>
 
-using namespace VPContact;
+#include "damage_region_test_tools.h"
 
-namespace
-{
-  const char *
-  name(const DamageRegionSolver::Preconditioner kind)
-  {
-    switch (kind)
-      {
-        case DamageRegionSolver::Preconditioner::incomplete_cholesky:
-          return "IC(0)";
-        case DamageRegionSolver::Preconditioner::modified_incomplete_cholesky:
-          return "MIC(0)";
-        default:
-          return "modified diagonal IC (Eisenstat)";
-      }
-  }
-} // namespace
+using namespace VPContact;
+using namespace VPContact::DamageRegionTestTools;
 
 int
 main(int argc, char **argv)
@@ -42,21 +27,11 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_SELF;
 
-  const double kershaw[4][4]
+  const DenseMatrix kershaw
     = {{3, -2, 0, 2}, {-2, 3, -2, 0}, {0, -2, 3, -2}, {2, 0, -2, 3}};
-  IndexSet               all = complete_index_set(4);
-  DynamicSparsityPattern pattern(4, 4);
-  for (unsigned int i = 0; i < 4; ++i)
-    for (unsigned int j = 0; j < 4; ++j)
-      if (kershaw[i][j] != 0.)
-        pattern.add(i, j);
+  IndexSet                       all = complete_index_set(4);
   TrilinosWrappers::SparseMatrix matrix;
-  matrix.reinit(all, all, pattern, comm);
-  for (unsigned int i = 0; i < 4; ++i)
-    for (unsigned int j = 0; j < 4; ++j)
-      if (kershaw[i][j] != 0.)
-        matrix.set(i, j, kershaw[i][j]);
-  matrix.compress(VectorOperation::insert);
+  copy_to_trilinos(kershaw, all, comm, matrix);
 
   for (const auto kind :
        {DamageRegionSolver::Preconditioner::incomplete_cholesky,

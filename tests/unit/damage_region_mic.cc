@@ -8,29 +8,14 @@
 #include <vpcontact/damage_region_solver.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <cmath>
 #include <iostream>
 
-using namespace VPContact;
+#include "damage_region_test_tools.h"
 
-namespace
-{
-  const char *
-  name(const DamageRegionSolver::Preconditioner kind)
-  {
-    switch (kind)
-      {
-        case DamageRegionSolver::Preconditioner::incomplete_cholesky:
-          return "IC(0)";
-        case DamageRegionSolver::Preconditioner::modified_incomplete_cholesky:
-          return "MIC(0)";
-        default:
-          return "modified diagonal IC (Eisenstat)";
-      }
-  }
-} // namespace
+using namespace VPContact;
+using namespace VPContact::DamageRegionTestTools;
 
 int
 main(int argc, char **argv)
@@ -38,42 +23,14 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_SELF;
 
-  // Q1 on a square, node (a, b) of the cell at (x + a, y + b): the stiffness
-  // is 2/3 on the diagonal, -1/6 between the ends of an edge and -1/3 across
-  // the diagonal; the lumped mass h^2/4 per node.
+  // The Q1 damage matrix of an 8 x 8 grid (see q1_damage_matrix()).
   const unsigned int n = 8, nodes = (n + 1) * (n + 1);
-  const double       h = 1. / n, kappa = 0.01, k = 0.01;
-  const auto         node
-    = [&](unsigned int x, unsigned int y) { return y * (n + 1) + x; };
-  std::vector<std::vector<double>> K(nodes, std::vector<double>(nodes, 0.));
-  for (unsigned int x = 0; x < n; ++x)
-    for (unsigned int y = 0; y < n; ++y)
-      for (unsigned int a = 0; a < 4; ++a)
-        for (unsigned int b = 0; b < 4; ++b)
-          {
-            const unsigned int ia = node(x + a % 2, y + a / 2);
-            const unsigned int ib = node(x + b % 2, y + b / 2);
-            const unsigned int d  = (a % 2 != b % 2) + (a / 2 != b / 2);
-            K[ia][ib] += kappa
-                           * (d == 0 ? 2. / 3. :
-                              d == 1 ? -1. / 6. :
-                                       -1. / 3.)
-                         + (d == 0 ? h * h / 4. / k : 0.);
-          }
+  const double       kappa = 0.01, k = 0.01;
+  const DenseMatrix  K = q1_damage_matrix(n, kappa, k);
 
-  IndexSet               all = complete_index_set(nodes);
-  DynamicSparsityPattern pattern(nodes, nodes);
-  for (unsigned int i = 0; i < nodes; ++i)
-    for (unsigned int j = 0; j < nodes; ++j)
-      if (K[i][j] != 0.)
-        pattern.add(i, j);
+  IndexSet                       all = complete_index_set(nodes);
   TrilinosWrappers::SparseMatrix matrix;
-  matrix.reinit(all, all, pattern, comm);
-  for (unsigned int i = 0; i < nodes; ++i)
-    for (unsigned int j = 0; j < nodes; ++j)
-      if (K[i][j] != 0.)
-        matrix.set(i, j, K[i][j]);
-  matrix.compress(VectorOperation::insert);
+  copy_to_trilinos(K, all, comm, matrix);
 
   for (const auto kind :
        {DamageRegionSolver::Preconditioner::modified_incomplete_cholesky,
