@@ -251,22 +251,15 @@ namespace VPContact
 
     // r = b - K x_0 on F (region indices), with the product of the other
     // preconditioners.
-    for (const unsigned int i : free_nodes)
-      p[i] = x[i];
-    multiply_direction();
-    double *const r = true_residual.data();
+    const double  b_norm2 = start_product(b, x);
+    double *const r       = true_residual.data();
     for (unsigned int k = 0; k < n; ++k)
       {
         const unsigned int i = region[k];
         r[k]                 = (is_free[i] ? b[i] - product[i] : 0.);
       }
-    double b_norm2 = 0;
     for (const unsigned int i : free_nodes)
-      {
-        b_norm2 += b[i] * b[i];
-        p[i] = product[i] = 0.;
-      }
-    b_norm2 = global_sum(b_norm2);
+      p[i] = product[i] = 0.;
     if (b_norm2 == 0.)
       {
         for (const unsigned int i : free_nodes)

@@ -402,6 +402,21 @@ namespace VPContact
 
 
   double
+  DamageRegionSolver::start_product(const double *b, const double *x)
+  {
+    double *p = direction.begin();
+    for (const unsigned int i : free_nodes)
+      p[i] = x[i];
+    multiply_direction();
+    double b_norm2 = 0;
+    for (const unsigned int i : free_nodes)
+      b_norm2 += b[i] * b[i];
+    return global_sum(b_norm2);
+  }
+
+
+
+  double
   DamageRegionSolver::multiply_direction()
   {
     // The search direction vanishes off F; on several ranks the products
@@ -442,16 +457,9 @@ namespace VPContact
     double       *p = direction.begin();
 
     // r = b - K x with the start vector x (zero off F).
+    const double b_norm2 = start_product(b, x);
     for (const unsigned int i : free_nodes)
-      p[i] = x[i];
-    multiply_direction();
-    double b_norm2 = 0;
-    for (const unsigned int i : free_nodes)
-      {
-        residual[i] = b[i] - product[i];
-        b_norm2 += b[i] * b[i];
-      }
-    b_norm2 = global_sum(b_norm2);
+      residual[i] = b[i] - product[i];
     if (b_norm2 == 0.)
       {
         // K_FF x_F = 0: x = 0, without iterations.

@@ -176,6 +176,12 @@ namespace VPContact
     double
     dot_free(const std::vector<double> &a, const std::vector<double> &b) const;
 
+    /// product = K x on F for the start vector @p x (zero off F), through
+    /// direction; returns |b|^2 over F, summed over the ranks. The start
+    /// of both CG loops (solve() and solve_eisenstat()).
+    double
+    start_product(const double *b, const double *x);
+
     /// product = K direction on F; returns direction . product over F, on
     /// every rank.
     double
