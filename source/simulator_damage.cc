@@ -430,10 +430,10 @@ namespace VPContact
     // previous step, every solve to the Solver tolerance.
     damage_bounds.begin_step(K);
     damage_system.begin_step();
-    const DamageBounds previous_sets = damage_bounds;
+    const std::vector<BoundStatus> previous_sets = damage_bounds.sets();
     if (!find_damage_sets_fast(step_rhs))
       {
-        damage_bounds = previous_sets;
+        damage_bounds.restore_sets(previous_sets);
         damage_change = 0.;
         for (unsigned int iteration = 1;; ++iteration)
           {

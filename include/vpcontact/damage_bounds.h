@@ -122,6 +122,14 @@ namespace VPContact
     free_ahead_of_front(const TrilinosWrappers::SparseMatrix &matrix,
                         const unsigned int                    rings);
 
+    /// The sets of all nodes, to go back to with restore_sets().
+    const std::vector<BoundStatus> &
+    sets() const;
+
+    /// Go back to the sets @p saved of sets(), taken after begin_step().
+    void
+    restore_sets(const std::vector<BoundStatus> &saved);
+
     /// Global sizes of the lower and upper sets.
     std::pair<unsigned int, unsigned int>
     count() const;
@@ -150,14 +158,34 @@ namespace VPContact
     std::vector<bool>         upper_at_start;
     unsigned int              front_size = 0;
 
-    /// The owned upper nodes with a neighbour below 1 (one matrix-vector
-    /// product with @p matrix).
-    std::vector<bool>
-    front(const TrilinosWrappers::SparseMatrix &matrix) const;
-    /// The marks of front() and their product with the matrix, kept.
+    /// The owned upper nodes with a neighbour below 1 (see
+    /// front_by_product() and front_by_graph()).
+    std::vector<unsigned int>
+    front(const TrilinosWrappers::SparseMatrix &matrix);
+
+    /// front() on several ranks: one matrix-vector product with @p matrix.
+    std::vector<unsigned int>
+    front_by_product(const TrilinosWrappers::SparseMatrix &matrix) const;
+
+    /// front() on one rank: a pass over the rows of the upper nodes of
+    /// the graph of @p matrix (kept from the first call after setup()).
+    std::vector<unsigned int>
+    front_by_graph(const TrilinosWrappers::SparseMatrix &matrix);
+
+    /// On one rank: the upper nodes next to the nodes of @p ring, which
+    /// are free; they are freed too.
+    std::vector<unsigned int>
+    free_next_ring(const std::vector<unsigned int> &ring);
+
+    /// The marks of front_by_product() and their product with the matrix,
+    /// kept.
     mutable TrilinosWrappers::MPI::Vector front_marks;
     mutable TrilinosWrappers::MPI::Vector front_reach;
-    MPI_Comm                              communicator = MPI_COMM_WORLD;
+    /// One rank: the neighbours of each node in the matrix graph (entries
+    /// that are not zero, the node itself left out), in CSR over the nodes.
+    std::vector<unsigned int> neighbour_start;
+    std::vector<unsigned int> neighbour;
+    MPI_Comm                  communicator = MPI_COMM_WORLD;
   };
 } // namespace VPContact
 

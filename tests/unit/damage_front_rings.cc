@@ -1,0 +1,123 @@
+// Unit test: the front of the upper damage set and the rings freed ahead of
+// it (DamageBounds::begin_step(), free_ahead_of_front(), rings_moved()). On
+// the Q1 damage matrix of a 16 x 16 grid, every node is put at the upper
+// bound but a seed; freeing r rings ahead must free exactly the nodes
+// within r grid steps of the seed (the square of side 2r + 1 around it, cut
+// by the boundary), the front at the start being the 8 (or, at a corner,
+// 3) neighbours of the seed. On one rank the front and the rings come from
+// the matrix graph, on two from a matrix-vector product each (the rows cut
+// into halves between y = 8 and 9, so the rings cross to the other rank):
+// both must print the same.
+#include <vpcontact/damage_bounds.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <iostream>
+
+#include "damage_region_test_tools.h"
+
+using namespace VPContact;
+using namespace VPContact::DamageRegionTestTools;
+
+namespace
+{
+  constexpr unsigned int n = 16, nodes = (n + 1) * (n + 1);
+  constexpr double       k = 0.01;
+
+  // The grid distance max(|dx|, |dy|) between nodes a and b.
+  unsigned int
+  distance(const unsigned int a, const unsigned int b)
+  {
+    const int dx
+      = static_cast<int>(a % (n + 1)) - static_cast<int>(b % (n + 1));
+    const int dy
+      = static_cast<int>(a / (n + 1)) - static_cast<int>(b / (n + 1));
+    return std::max(std::abs(dx), std::abs(dy));
+  }
+
+  // All nodes upper but @p seed, then @p rings rings freed ahead; prints
+  // what was freed and how far from the seed the free and the upper nodes
+  // lie.
+  void
+  check(const TrilinosWrappers::SparseMatrix &matrix,
+        const IndexSet                       &owned,
+        const IndexSet                       &relevant,
+        const unsigned int                    seed,
+        const unsigned int                    rings)
+  {
+    const MPI_Comm                comm = matrix.get_mpi_communicator();
+    TrilinosWrappers::MPI::Vector mass(owned, relevant, comm);
+    TrilinosWrappers::MPI::Vector residual(mass), damage(mass);
+    {
+      // Upper: zeta = 1 with a positive multiplier; the seed: zeta = 1/2
+      // with none.
+      TrilinosWrappers::MPI::Vector m(owned, comm), r(owned, comm),
+        z(owned, comm);
+      for (const auto i : owned)
+        {
+          m(i) = 1. / (n * n);
+          r(i) = (i == seed ? 0. : 1.);
+          z(i) = (i == seed ? 0.5 : 1.);
+        }
+      mass     = m;
+      residual = r;
+      damage   = z;
+    }
+    DamageBounds bounds;
+    bounds.setup(relevant, owned, mass, comm);
+    bounds.update(residual, damage, k);
+    bounds.begin_step(matrix);
+    const unsigned int freed      = bounds.free_ahead_of_front(matrix, rings);
+    const auto [n_lower, n_upper] = bounds.count();
+    const double rings_moved      = bounds.rings_moved();
+
+    // The sets by node, and the distances from the seed.
+    TrilinosWrappers::MPI::Vector state(owned, comm);
+    bounds.write_state(state);
+    unsigned int farthest_free = 0, nearest_upper = n + 1;
+    for (const auto i : owned)
+      if (state(i) == 1.)
+        nearest_upper = std::min(nearest_upper, distance(i, seed));
+      else
+        farthest_free = std::max(farthest_free, distance(i, seed));
+    farthest_free = Utilities::MPI::max(farthest_free, comm);
+    nearest_upper = Utilities::MPI::min(nearest_upper, comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "seed (" << seed % (n + 1) << ", " << seed / (n + 1) << "), "
+                << rings << " rings: " << freed << " nodes freed, rings moved "
+                << rings_moved << ", upper " << n_upper << ", lower " << n_lower
+                << "; free nodes at most " << farthest_free
+                << " steps from the seed, upper ones at least " << nearest_upper
+                << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+  const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+
+  const DenseMatrix K = q1_damage_matrix(n, 0.01, k);
+  IndexSet          owned(nodes), relevant(nodes);
+  owned.add_range(rank * nodes / n_ranks, (rank + 1) * nodes / n_ranks);
+  for (const auto i : owned)
+    for (unsigned int j = 0; j < nodes; ++j)
+      if (K[i][j] != 0.)
+        relevant.add_index(j);
+  TrilinosWrappers::SparseMatrix matrix;
+  copy_to_trilinos(K, owned, comm, matrix);
+
+  // The centre (8, 8), next to the cut between the ranks; a corner; and
+  // as many rings as reach the boundary from the centre, and beyond.
+  const unsigned int centre = 8 * (n + 1) + 8;
+  check(matrix, owned, relevant, centre, 0);
+  check(matrix, owned, relevant, centre, 1);
+  check(matrix, owned, relevant, centre, 3);
+  check(matrix, owned, relevant, 0, 2);
+  check(matrix, owned, relevant, centre, 8);
+  check(matrix, owned, relevant, centre, 9);
+}
