@@ -62,6 +62,55 @@ namespace VPContact
 
 
 
+  template <int dim>
+  ArrayView<const typename CellHalves<dim>::cell_iterator>
+  CellHalves<dim>::chunk(const unsigned int c,
+                         const unsigned int n_chunks) const
+  {
+    AssertIndexRange(c, n_chunks);
+    const std::size_t n = cells.size();
+    return make_array_view(cells.data() + c * n / n_chunks,
+                           cells.data() + (c + 1) * n / n_chunks);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  CellHalves<dim>::size() const
+  {
+    return cells.size();
+  }
+
+
+
+  void
+  WorkAhead::restart()
+  {
+    arrived.store(false, std::memory_order_release);
+    done = 0;
+  }
+
+
+
+  void
+  WorkAhead::arrive()
+  {
+    arrived.store(true, std::memory_order_release);
+  }
+
+
+
+  unsigned int
+  WorkAhead::take_done()
+  {
+    const unsigned int n = done;
+    restart();
+    return n;
+  }
+
+
+
   template class CellHalves<2>;
   template class CellHalves<3>;
 } // namespace VPContact

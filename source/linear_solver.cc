@@ -231,23 +231,29 @@ namespace VPContact
 
   std::future<unsigned int>
   LinearSolver::solve_in_background(TrilinosWrappers::MPI::Vector       &x,
-                                    const TrilinosWrappers::MPI::Vector &b)
+                                    const TrilinosWrappers::MPI::Vector &b,
+                                    const std::function<void()>         &then)
   {
     Assert(solves_in_background(), ExcInternalError());
     // The norm is a reduction over the ranks: taken here, in the calling
     // thread. Exceptions of the second thread reach the caller from get();
     // should the caller leave by an exception first, the future's
     // destructor waits for the thread.
-    if (checked_norm(b) == 0.)
+    const bool zero = (checked_norm(b) == 0.);
+    if (zero)
+      x = 0.;
+    if (zero && !then)
       {
-        x = 0.;
         std::promise<unsigned int> done;
         done.set_value(0);
         return done.get_future();
       }
-    return std::async(std::launch::async, [this, &x, &b]() {
-      cholesky->solve(x, b);
-      return 1u;
+    return std::async(std::launch::async, [this, &x, &b, zero, then]() {
+      if (!zero)
+        cholesky->solve(x, b);
+      if (then)
+        then();
+      return zero ? 0u : 1u;
     });
   }
 

@@ -25,8 +25,17 @@ namespace VPContact
         constraints.distribute(vector);
         return;
       }
+    distribute_owned_constraints(constraints, vector);
+  }
 
-    double *values = vector.begin();
+
+
+  void
+  distribute_owned_constraints(const AffineConstraints<double> &constraints,
+                               TrilinosWrappers::MPI::Vector   &vector)
+  {
+    const IndexSet owned  = vector.locally_owned_elements();
+    double        *values = vector.begin();
     for (const auto &line : constraints.get_lines())
       if (owned.is_element(line.index))
         {

@@ -2,15 +2,107 @@
 // E eps(du) at every quadrature point, its safeguards, and the quantities
 // derived from it for output.
 #include <vpcontact/input_error.h>
+#include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
 
 #include <deal.II/fe/fe_values.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace VPContact
 {
+  template <int dim>
+  double
+  Simulator<dim>::update_stress_chunk(const unsigned int c, const bool implicit)
+  {
+    // sigma_n = sigma_{n-1} + k G_{n-1} + E eps(du) (the predictor with
+    // the increment), or the backward Euler update, at the points of the
+    // cells of chunk c. NaN compares false and is turned into infinity.
+    const double *const increment_entries
+      = cell_kinematics.local_entries(increment);
+    const double *const solution_entries
+      = implicit ? cell_kinematics.local_entries(solution) : nullptr;
+    std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
+    std::vector<double>                  damage_values(quadrature.size(), 1.);
+    double                               largest = 0;
+    for (const auto &cell : cell_halves.chunk(c, stress_chunks))
+      {
+        cell_kinematics.strains(cell,
+                                increment_entries,
+                                make_array_view(strain_increments));
+        if (implicit)
+          {
+            cell_kinematics.strains(cell,
+                                    solution_entries,
+                                    make_array_view(strains));
+            if (damage_model.is_active())
+              cell_kinematics.damage(cell,
+                                     solution_entries,
+                                     make_array_view(damage_values));
+          }
+        const auto history = stress_history.get_data(cell);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            auto &point = history[q];
+            if (implicit)
+              point.stress
+                = implicit_stress_update(
+                    *viscoplastic_law,
+                    point.stress + material.stress(strain_increments[q]),
+                    strains[q],
+                    damage_values[q],
+                    time_discretization.step_size(),
+                    material.stiffness())
+                    .stress;
+            else
+              point.stress
+                = point.predictor + material.stress(strain_increments[q]);
+            for (unsigned int i = 0;
+                 i < SymmetricTensor<2, dim>::n_independent_components;
+                 ++i)
+              {
+                const double value = std::abs(point.stress.access_raw_entry(i));
+                largest            = (value >= largest ?
+                                        value :
+                                      std::isnan(value) ?
+                                        std::numeric_limits<double>::infinity() :
+                                        largest);
+              }
+          }
+      }
+    return largest;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::update_stress_ahead()
+  {
+    // Runs in the second thread, on one rank (the factors solve in the
+    // background only there): no MPI function. On one rank the constraints
+    // read only owned entries, and the ghosted increment has the layout of
+    // the owned one.
+    AssertThrow(!increment.has_ghost_elements()
+                  && increment.locally_owned_size()
+                       == increment_owned.locally_owned_size(),
+                ExcInternalError());
+    distribute_owned_constraints(constraints, increment_owned);
+    std::copy(increment_owned.begin(),
+              increment_owned.end(),
+              increment.begin());
+    increment_ready = true;
+    stress_chunk_largest.resize(stress_chunks);
+    stress_ahead.run_ahead(stress_chunks, [this](const unsigned int c) {
+      stress_chunk_largest[c] = update_stress_chunk(c, false);
+    });
+  }
+
+
+
   template <int dim>
   void
   Simulator<dim>::update_stress(const unsigned int n)
@@ -19,72 +111,26 @@ namespace VPContact
 
     // Backward Euler solves for the stress again from sigma_{n-1}, with the
     // strain of u_n and the damage zeta_{n-1} (still in the solution).
-    const bool          implicit = viscoplasticity.implicit() && n > 0;
-    const double *const increment_entries
-      = cell_kinematics.local_entries(increment);
-    const double *const solution_entries
-      = implicit ? cell_kinematics.local_entries(solution) : nullptr;
-
-    // Each cell writes only its own quadrature points: the two halves of
-    // the cells run at once where there is a second core (CellHalves).
-    // Each returns its largest stress component, to catch an explicit step
-    // that has blown up; NaN compares false and is turned into infinity.
-    const auto update_half = [&](const unsigned int half) {
-      std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
-      std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
-      std::vector<double>                  damage_values(quadrature.size(), 1.);
-      double                               largest = 0;
-      for (const auto &cell : cell_halves.half(half))
-        {
-          cell_kinematics.strains(cell,
-                                  increment_entries,
-                                  make_array_view(strain_increments));
-          if (implicit)
-            {
-              cell_kinematics.strains(cell,
-                                      solution_entries,
-                                      make_array_view(strains));
-              if (damage_model.is_active())
-                cell_kinematics.damage(cell,
-                                       solution_entries,
-                                       make_array_view(damage_values));
-            }
-          const auto history = stress_history.get_data(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              auto &point = history[q];
-              if (implicit)
-                point.stress
-                  = implicit_stress_update(
-                      *viscoplastic_law,
-                      point.stress + material.stress(strain_increments[q]),
-                      strains[q],
-                      damage_values[q],
-                      time_discretization.step_size(),
-                      material.stiffness())
-                      .stress;
-              else
-                point.stress
-                  = point.predictor + material.stress(strain_increments[q]);
-              for (unsigned int c = 0;
-                   c < SymmetricTensor<2, dim>::n_independent_components;
-                   ++c)
-                {
-                  const double value
-                    = std::abs(point.stress.access_raw_entry(c));
-                  largest = (value >= largest ?
-                               value :
-                             std::isnan(value) ?
-                               std::numeric_limits<double>::infinity() :
-                               largest);
-                }
-            }
-        }
-      return largest;
-    };
-    const auto halves
-      = run_in_halves(linear_solver.uses_second_thread(), update_half);
-    double largest = std::max(halves[0], halves[1]);
+    // The chunks the second thread did ahead (see update_stress_ahead())
+    // are done; the others run in two halves where there is a second core.
+    // Each chunk writes only the quadrature points of its cells and
+    // returns its largest stress component, to catch an explicit step that
+    // has blown up.
+    const bool         implicit = viscoplasticity.implicit() && n > 0;
+    const unsigned int first    = stress_ahead.take_done();
+    const unsigned int middle   = (first + stress_chunks) / 2;
+    stress_chunk_largest.resize(stress_chunks);
+    run_in_halves(linear_solver.uses_second_thread(),
+                  [&](const unsigned int half) {
+                    for (unsigned int c = (half == 0 ? first : middle);
+                         c < (half == 0 ? middle : stress_chunks);
+                         ++c)
+                      stress_chunk_largest[c]
+                        = update_stress_chunk(c, implicit);
+                    return 0;
+                  });
+    double largest = *std::max_element(stress_chunk_largest.begin(),
+                                       stress_chunk_largest.end());
     largest        = Utilities::MPI::max(largest, mpi_communicator);
 
     const double limit

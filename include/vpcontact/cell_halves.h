@@ -8,6 +8,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <array>
+#include <atomic>
 #include <future>
 #include <vector>
 
@@ -65,9 +66,61 @@ namespace VPContact
     ArrayView<const cell_iterator>
     half(const unsigned int h) const;
 
+    /// The cells of chunk @p c of @p n_chunks of about equal size, in
+    /// order.
+    ArrayView<const cell_iterator>
+    chunk(const unsigned int c, const unsigned int n_chunks) const;
+
+    /// The number of cells.
+    unsigned int
+    size() const;
+
   private:
     std::vector<cell_iterator> cells;
     unsigned int               middle = 0;
+  };
+
+
+
+  /**
+   * A pass in chunks that the second thread may begin while the calling
+   * thread is still busy with other work, and the calling thread finishes.
+   * The second thread runs chunk after chunk (run_ahead()) until all are
+   * done or the calling thread has said it is free (arrive()); once the
+   * second thread has ended, take_done() tells the calling thread how many
+   * chunks are done, and it runs the others. Each chunk must write only its
+   * own data, so that the result does not depend on who ran it.
+   */
+  class WorkAhead
+  {
+  public:
+    /// Nothing done: the pass starts over (its input has changed).
+    void
+    restart();
+
+    /// In the second thread: work(c) for c = 0, 1, ..., n_chunks - 1, until
+    /// the calling thread arrives.
+    template <typename Work>
+    void
+    run_ahead(const unsigned int n_chunks, const Work &work)
+    {
+      while (done < n_chunks && !arrived.load(std::memory_order_acquire))
+        work(done++);
+    }
+
+    /// In the calling thread: free to do the rest; run_ahead() stops
+    /// after the chunk it is working on.
+    void
+    arrive();
+
+    /// In the calling thread, after the second thread has ended: the
+    /// number of chunks done ahead; the pass starts over for the next time.
+    unsigned int
+    take_done();
+
+  private:
+    std::atomic<bool> arrived{false};
+    unsigned int      done = 0;
   };
 } // namespace VPContact
 

@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <future>
 #include <memory>
 #include <string>
@@ -91,12 +92,15 @@ namespace VPContact
      * future returns. That thread touches nothing but @p x, @p b and the
      * factors, and calls no MPI function (MPI is initialized for one
      * calling thread at a time): until get(), the caller may do anything
-     * else, but must leave @p x and @p b alone. Only if
+     * else, but must leave @p x and @p b alone. @p then, if given, runs in
+     * the same thread once @p x is there (also where b = 0 and x = 0
+     * without a solve), under the same rules. Only if
      * solves_in_background().
      */
     std::future<unsigned int>
     solve_in_background(TrilinosWrappers::MPI::Vector       &x,
-                        const TrilinosWrappers::MPI::Vector &b);
+                        const TrilinosWrappers::MPI::Vector &b,
+                        const std::function<void()>         &then = {});
 
     /// One application of the preconditioner (AMG V-cycle) or, for the
     /// direct solvers, one solve with the factors: dst = P^{-1} src.

@@ -30,6 +30,16 @@ namespace VPContact
   void
   distribute_constraints(const AffineConstraints<double> &constraints,
                          TrilinosWrappers::MPI::Vector   &vector);
+
+  /**
+   * distribute_constraints() where every constraint of this rank's entries
+   * is known to read only owned entries (on one rank, always): in place,
+   * without the reduction that decides it, so that a thread other than the
+   * one that calls MPI may run it.
+   */
+  void
+  distribute_owned_constraints(const AffineConstraints<double> &constraints,
+                               TrilinosWrappers::MPI::Vector   &vector);
 } // namespace VPContact
 
 #endif

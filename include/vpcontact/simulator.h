@@ -235,6 +235,16 @@ namespace VPContact
     // simulator_stress.cc
     void
     update_stress(const unsigned int n);
+    /// The explicit stress update of chunk @p c of the cells (see
+    /// stress_chunks); returns its largest stress component (infinity for
+    /// NaN).
+    double
+    update_stress_chunk(const unsigned int c, const bool implicit);
+    /// In the second thread, once the substitutions have given the
+    /// increment: its constraints, its ghosted copy, and chunks of the
+    /// stress update while the damage step still runs (one rank only).
+    void
+    update_stress_ahead();
     void
     compute_cell_stresses(Vector<double>              &von_mises,
                           std::vector<Vector<double>> &components) const;
@@ -399,6 +409,14 @@ namespace VPContact
     /// The locally owned cells in two halves, for the passes over all cells
     /// (two threads where there is a second core; once per mesh).
     CellHalves<dim> cell_halves;
+    /// The stress update in chunks, some of which the second thread may
+    /// have done ahead (see update_stress_ahead()), with the largest
+    /// stress component of each chunk; whether the increment it read is
+    /// distributed and copied already.
+    WorkAhead                     stress_ahead;
+    std::vector<double>           stress_chunk_largest;
+    bool                          increment_ready = false;
+    static constexpr unsigned int stress_chunks   = 64;
 
     /// One constant mode per component, for ML (computed once per mesh).
     std::vector<std::vector<bool>> all_constant_modes;

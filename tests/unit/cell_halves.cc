@@ -3,15 +3,19 @@
 // cell once, in order; run_in_halves() returns {work(0), work(1)} with one
 // thread and with two, runs work(1) in another thread only with two, and
 // hands an exception of either half to the caller once both have ended.
+// The chunks hold every owned cell once, in order; WorkAhead's second
+// thread runs chunks until the caller arrives, and the caller the rest.
 #include <vpcontact/cell_halves.h>
 
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -122,6 +126,62 @@ main(int argc, char **argv)
              caught);
       if (thrower == 0)
         report("  after the second half has ended", second_ended);
+    }
+
+  // Chunks: every owned cell in one chunk, once and in order, for fewer
+  // and for more chunks than cells.
+  for (const unsigned int n_chunks : {1u, 7u, 1000u})
+    {
+      std::vector<unsigned int> chunked;
+      for (unsigned int c = 0; c < n_chunks; ++c)
+        for (const auto &cell : halves.chunk(c, n_chunks))
+          chunked.push_back(cell->active_cell_index());
+      report(std::to_string(n_chunks)
+               + " chunks: every owned cell once, in "
+                 "order",
+             chunked == order && halves.size() == order.size());
+    }
+
+  // WorkAhead: the second thread runs chunks until the caller arrives; the
+  // caller then runs the rest. Whoever ran a chunk, each is run once and
+  // the areas add up.
+  constexpr unsigned int n_chunks = 64;
+  WorkAhead              ahead;
+  for (const std::string when : {"never", "at once", "midway"})
+    {
+      std::vector<double>       area(n_chunks, 0.);
+      std::vector<unsigned int> runs(n_chunks, 0);
+      const auto                work = [&](const unsigned int c) {
+        ++runs[c];
+        for (const auto &cell : halves.chunk(c, n_chunks))
+          area[c] += cell->measure();
+        if (when == "midway" && c == n_chunks / 2)
+          ahead.arrive();
+      };
+      ahead.restart();
+      if (when == "at once")
+        ahead.arrive();
+      std::thread second([&]() { ahead.run_ahead(n_chunks, work); });
+      second.join();
+      const unsigned int done = ahead.take_done();
+      for (unsigned int c = done; c < n_chunks; ++c)
+        work(c);
+      const double total
+        = Utilities::MPI::sum(std::accumulate(area.begin(), area.end(), 0.),
+                              comm);
+      report("ahead, caller arriving " + when + ": "
+               + (when == "never"   ? "all chunks ahead" :
+                  when == "at once" ? "none ahead" :
+                                      "the chunks up to the arrival ahead"),
+             done
+               == (when == "never"   ? n_chunks :
+                   when == "at once" ? 0u :
+                                       n_chunks / 2 + 1));
+      report("  every chunk run once, the areas add up",
+             std::all_of(runs.begin(), runs.end(), [](const unsigned int r) {
+               return r == 1;
+             }) && std::abs(total - 1.) < 1e-14);
+      report("  the next pass starts over", ahead.take_done() == 0);
     }
 
   report("cores per rank at least 1", cores_per_rank(comm) >= 1);
