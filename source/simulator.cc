@@ -371,13 +371,17 @@ namespace VPContact
           increment_ready = false;
           if (iteration == 1 && beside)
             {
+              // CellKinematics checks the layout in this thread (it may
+              // call MPI) and remembers it (not safe in two threads).
+              const double *const increment_entries
+                = cell_kinematics.local_entries(increment);
+              const auto ahead = [this, increment_entries]() {
+                update_stress_ahead(increment_entries);
+              };
               if (linear_solver.solves_in_background())
-                solving
-                  = linear_solver.solve_in_background(increment_owned,
-                                                      rhs,
-                                                      [this]() {
-                                                        update_stress_ahead();
-                                                      });
+                solving = linear_solver.solve_in_background(increment_owned,
+                                                            rhs,
+                                                            ahead);
               beside();
               stress_ahead.arrive();
             }

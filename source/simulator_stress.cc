@@ -15,15 +15,15 @@ namespace VPContact
 {
   template <int dim>
   double
-  Simulator<dim>::update_stress_chunk(const unsigned int c, const bool implicit)
+  Simulator<dim>::update_stress_chunk(const unsigned int  c,
+                                      const double *const increment_entries,
+                                      const double *const solution_entries)
   {
     // sigma_n = sigma_{n-1} + k G_{n-1} + E eps(du) (the predictor with
-    // the increment), or the backward Euler update, at the points of the
-    // cells of chunk c. NaN compares false and is turned into infinity.
-    const double *const increment_entries
-      = cell_kinematics.local_entries(increment);
-    const double *const solution_entries
-      = implicit ? cell_kinematics.local_entries(solution) : nullptr;
+    // the increment), or, with @p solution_entries, the backward Euler
+    // update, at the points of the cells of chunk c. NaN compares false
+    // and is turned into infinity.
+    const bool implicit = (solution_entries != nullptr);
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<double>                  damage_values(quadrature.size(), 1.);
@@ -80,7 +80,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::update_stress_ahead()
+  Simulator<dim>::update_stress_ahead(const double *const increment_entries)
   {
     // Runs in the second thread, on one rank (the factors solve in the
     // background only there): no MPI function. On one rank the constraints
@@ -96,9 +96,11 @@ namespace VPContact
               increment.begin());
     increment_ready = true;
     stress_chunk_largest.resize(stress_chunks);
-    stress_ahead.run_ahead(stress_chunks, [this](const unsigned int c) {
-      stress_chunk_largest[c] = update_stress_chunk(c, false);
-    });
+    stress_ahead.run_ahead(stress_chunks,
+                           [this, increment_entries](const unsigned int c) {
+                             stress_chunk_largest[c]
+                               = update_stress_chunk(c, increment_entries);
+                           });
   }
 
 
@@ -116,9 +118,13 @@ namespace VPContact
     // Each chunk writes only the quadrature points of its cells and
     // returns its largest stress component, to catch an explicit step that
     // has blown up.
-    const bool         implicit = viscoplasticity.implicit() && n > 0;
-    const unsigned int first    = stress_ahead.take_done();
-    const unsigned int middle   = (first + stress_chunks) / 2;
+    const bool          implicit = viscoplasticity.implicit() && n > 0;
+    const double *const increment_entries
+      = cell_kinematics.local_entries(increment);
+    const double *const solution_entries
+      = implicit ? cell_kinematics.local_entries(solution) : nullptr;
+    const unsigned int first  = stress_ahead.take_done();
+    const unsigned int middle = (first + stress_chunks) / 2;
     stress_chunk_largest.resize(stress_chunks);
     run_in_halves(linear_solver.uses_second_thread(),
                   [&](const unsigned int half) {
@@ -126,7 +132,9 @@ namespace VPContact
                          c < (half == 0 ? middle : stress_chunks);
                          ++c)
                       stress_chunk_largest[c]
-                        = update_stress_chunk(c, implicit);
+                        = update_stress_chunk(c,
+                                              increment_entries,
+                                              solution_entries);
                     return 0;
                   });
     double largest = *std::max_element(stress_chunk_largest.begin(),

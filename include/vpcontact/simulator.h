@@ -235,16 +235,21 @@ namespace VPContact
     // simulator_stress.cc
     void
     update_stress(const unsigned int n);
-    /// The explicit stress update of chunk @p c of the cells (see
-    /// stress_chunks); returns its largest stress component (infinity for
-    /// NaN).
+    /// The stress update of chunk @p c of the cells (see stress_chunks)
+    /// from the local entries of the increment and, for the implicit
+    /// update, of the solution (else nullptr), as
+    /// CellKinematics::local_entries() gives them in the calling thread;
+    /// returns its largest stress component (infinity for NaN).
     double
-    update_stress_chunk(const unsigned int c, const bool implicit);
+    update_stress_chunk(const unsigned int  c,
+                        const double *const increment_entries,
+                        const double *const solution_entries = nullptr);
     /// In the second thread, once the substitutions have given the
-    /// increment: its constraints, its ghosted copy, and chunks of the
-    /// stress update while the damage step still runs (one rank only).
+    /// increment: its constraints, its ghosted copy (@p increment_entries,
+    /// its local entries), and chunks of the stress update while the damage
+    /// step still runs (one rank only).
     void
-    update_stress_ahead();
+    update_stress_ahead(const double *const increment_entries);
     void
     compute_cell_stresses(Vector<double>              &von_mises,
                           std::vector<Vector<double>> &components) const;
