@@ -358,30 +358,18 @@ namespace VPContact
           // The work beside the solve (the damage step) runs in the first
           // iteration. When the factors can solve in a second thread it
           // runs while they do, and "Solve" times only what it does not
-          // hide; the second thread touches only the increment and the
-          // right-hand side, which the damage step does not.
-          // Once the factors have solved, the second thread also starts on
-          // the stress update while the damage step runs: once the damage
-          // has spread, the damage step is the longer of the two (at 512^2
-          // cells by 90 ms per step). A chunk it does is the same bits
-          // either way, and all is done again should the friction sets
-          // change the increment.
+          // hide. Then the second thread starts on the stress update (see
+          // solve_with_stress_ahead()); should the friction sets change the
+          // increment, the stress update starts over. It touches only the
+          // increment, the right-hand side and the stress at the points,
+          // none of which the damage step reads.
           std::future<unsigned int> solving;
           stress_ahead.restart();
           increment_ready = false;
           if (iteration == 1 && beside)
             {
-              // CellKinematics checks the layout in this thread (it may
-              // call MPI) and remembers it (not safe in two threads).
-              const double *const increment_entries
-                = cell_kinematics.local_entries(increment);
-              const auto ahead = [this, increment_entries]() {
-                update_stress_ahead(increment_entries);
-              };
               if (linear_solver.solves_in_background())
-                solving = linear_solver.solve_in_background(increment_owned,
-                                                            rhs,
-                                                            ahead);
+                solving = solve_with_stress_ahead();
               beside();
               stress_ahead.arrive();
             }

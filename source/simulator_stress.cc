@@ -79,6 +79,27 @@ namespace VPContact
 
 
   template <int dim>
+  std::future<unsigned int>
+  Simulator<dim>::solve_with_stress_ahead()
+  {
+    // Once the factors have solved in the second thread, it also starts on
+    // the stress update while the damage step runs in this one: once the
+    // damage has spread, the damage step is the longer of the two (at
+    // 512^2 cells by 90 ms per step). A chunk is the same bits whichever
+    // thread computes it. CellKinematics checks the increment's layout
+    // here (the check may call MPI) and remembers it (not safe in two
+    // threads).
+    const double *const increment_entries
+      = cell_kinematics.local_entries(increment);
+    return linear_solver.solve_in_background(
+      increment_owned,
+      rhs,
+      [this, increment_entries]() { update_stress_ahead(increment_entries); });
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::update_stress_ahead(const double *const increment_entries)
   {

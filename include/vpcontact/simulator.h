@@ -244,6 +244,10 @@ namespace VPContact
     update_stress_chunk(const unsigned int  c,
                         const double *const increment_entries,
                         const double *const solution_entries = nullptr);
+    /// The solve with the factors in the second thread, which then goes on
+    /// with update_stress_ahead(); as LinearSolver::solve_in_background().
+    std::future<unsigned int>
+    solve_with_stress_ahead();
     /// In the second thread, once the substitutions have given the
     /// increment: its constraints, its ghosted copy (@p increment_entries,
     /// its local entries), and chunks of the stress update while the damage

@@ -98,12 +98,10 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
-  const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
 
-  const DenseMatrix K = q1_damage_matrix(n, 0.01, k);
-  IndexSet          owned(nodes), relevant(nodes);
-  owned.add_range(rank * nodes / n_ranks, (rank + 1) * nodes / n_ranks);
+  const DenseMatrix K     = q1_damage_matrix(n, 0.01, k);
+  const IndexSet    owned = contiguous_rows(nodes, comm);
+  IndexSet          relevant(nodes);
   for (const auto i : owned)
     for (unsigned int j = 0; j < nodes; ++j)
       if (K[i][j] != 0.)

@@ -25,8 +25,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
-  const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
   // The Q1 damage matrix of a 16 x 16 grid (see q1_damage_matrix()).
   const unsigned int n = 16, nodes = (n + 1) * (n + 1);
@@ -46,8 +45,7 @@ main(int argc, char **argv)
           exact[node(x, y)] = 1. + std::sin(3. * x * h) * std::cos(2. * y * h);
       }
 
-  IndexSet owned(nodes);
-  owned.add_range(rank * nodes / n_ranks, (rank + 1) * nodes / n_ranks);
+  const IndexSet                 owned = contiguous_rows(nodes, comm);
   TrilinosWrappers::SparseMatrix matrix;
   copy_to_trilinos(K, owned, comm, matrix);
 

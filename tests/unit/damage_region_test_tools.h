@@ -7,6 +7,7 @@
 #include <vpcontact/damage_region_solver.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
@@ -62,6 +63,18 @@ namespace VPContact
                              + (d == 0 ? h * h / 4. / k : 0.);
               }
       return K;
+    }
+
+    /// The rows of a matrix with @p size rows that this rank owns:
+    /// contiguous blocks of about equal size, in the order of the ranks.
+    inline IndexSet
+    contiguous_rows(const unsigned int size, const MPI_Comm comm)
+    {
+      const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      IndexSet           owned(size);
+      owned.add_range(rank * size / n_ranks, (rank + 1) * size / n_ranks);
+      return owned;
     }
 
     /// The rows of K that this rank owns, with their nonzero entries, in a
