@@ -617,42 +617,15 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::add_damage_statistics(std::string &line)
+  Simulator<dim>::add_damage_statistics(std::string &line,
+                                        const double fraction)
   {
     // Nodal extremes, the bound violation (which must be exactly 0), and the
-    // volume fraction where zeta < 1 at the quadrature points.
+    // volume fraction where zeta < 1 at the quadrature points (from
+    // measure_step()).
     const auto [lowest, highest] = damage_range(damage_owned);
     const double violation       = std::max({0., -lowest, highest - 1.});
-
-    // zeta at the quadrature points from the damage component of the
-    // solution (CellKinematics); JxW as stored with the stress history.
-    // Summed over each half of the cells, then the two sums.
-    const double *const entries = cell_kinematics.local_entries(solution);
-    const auto          sums
-      = run_in_halves(linear_solver.uses_second_thread(),
-                      [&](const unsigned int half) {
-                        std::vector<double> values(quadrature.size());
-                        double              damaged = 0, volume = 0;
-                        for (const auto &cell : cell_halves.half(half))
-                          {
-                            const auto JxW = stress_history.JxW(cell);
-                            cell_kinematics.damage(cell,
-                                                   entries,
-                                                   make_array_view(values));
-                            for (unsigned int q = 0; q < JxW.size(); ++q)
-                              {
-                                volume += JxW[q];
-                                if (values[q] < 1. - 1e-12)
-                                  damaged += JxW[q];
-                              }
-                          }
-                        return std::make_pair(damaged, volume);
-                      });
-    const double fraction
-      = Utilities::MPI::sum(sums[0].first + sums[1].first, mpi_communicator)
-        / Utilities::MPI::sum(sums[0].second + sums[1].second,
-                              mpi_communicator);
-    max_damage_violation = std::max(max_damage_violation, violation);
+    max_damage_violation         = std::max(max_damage_violation, violation);
 
     statistics.add_value("damage_min", lowest);
     statistics.add_value("damage_max", highest);

@@ -257,8 +257,16 @@ namespace VPContact
     void
     compute_cell_stresses(Vector<double>              &von_mises,
                           std::vector<Vector<double>> &components) const;
-    double
-    elastic_energy() const;
+    /// What every step reports of the state at its end (measure_step()).
+    struct StepMeasures
+    {
+      double von_mises_max    = 0;
+      double u_max            = 0;
+      double energy           = 0;
+      double damaged_fraction = 0;
+    };
+    StepMeasures
+    measure_step() const;
     double
     stress_error(const double time) const;
 
@@ -286,7 +294,7 @@ namespace VPContact
     void
     store_damage(const unsigned int n);
     void
-    add_damage_statistics(std::string &line);
+    add_damage_statistics(std::string &line, const double fraction);
 
     // simulator_output.cc
     void
