@@ -10,9 +10,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace VPContact
 {
+  namespace
+  {
+    /// The cell average of the quadrature point stress, from the points of
+    /// a cell (@p history) and their weights @p JxW: its L2 projection on
+    /// piecewise constants, the paper's P_Q (exact for the stress of a
+    /// parallelogram cell, which is constant).
+    template <typename History, typename Weights>
+    auto
+    cell_average_stress(const History &history, const Weights &JxW)
+    {
+      std::decay_t<decltype(history[0].stress)> average; // zero
+      double                                    volume = 0;
+      for (unsigned int q = 0; q < history.size(); ++q)
+        {
+          average += history[q].stress * JxW[q];
+          volume += JxW[q];
+        }
+      return average / volume;
+    }
+  } // namespace
+
+
+
   template <int dim>
   double
   Simulator<dim>::update_stress_chunk(const unsigned int  c,
@@ -190,9 +214,8 @@ namespace VPContact
     Vector<double>              &von_mises,
     std::vector<Vector<double>> &components) const
   {
-    // The cell average of the quadrature point stress: its L2 projection on
-    // piecewise constants, the paper's P_Q (exact for the stress of a
-    // parallelogram cell, which is constant).
+    // The cell average of the quadrature point stress (see
+    // cell_average_stress()).
     von_mises.reinit(triangulation.n_active_cells());
     components.assign(SymmetricTensor<2, dim>::n_independent_components,
                       Vector<double>(triangulation.n_active_cells()));
@@ -202,16 +225,9 @@ namespace VPContact
                   [&](const unsigned int half) {
                     for (const auto &cell : cell_halves.half(half))
                       {
-                        const auto history = stress_history.get_data(cell);
-                        const auto JxW     = stress_history.JxW(cell);
-                        SymmetricTensor<2, dim> average;
-                        double                  volume = 0;
-                        for (unsigned int q = 0; q < history.size(); ++q)
-                          {
-                            average += history[q].stress * JxW[q];
-                            volume += JxW[q];
-                          }
-                        average /= volume;
+                        const SymmetricTensor<2, dim> average
+                          = cell_average_stress(stress_history.get_data(cell),
+                                                stress_history.JxW(cell));
                         const unsigned int index = cell->active_cell_index();
                         von_mises(index)         = von_mises_norm(average);
                         for (unsigned int c = 0; c < components.size(); ++c)
@@ -256,18 +272,13 @@ namespace VPContact
           zeta(quadrature.size());
         for (const auto &cell : cell_halves.half(half))
           {
-            const auto              history = stress_history.get_data(cell);
-            const auto              JxW = stress_history.JxW(cell);
-            SymmetricTensor<2, dim> average;
-            double                  volume = 0;
+            const auto history = stress_history.get_data(cell);
+            const auto JxW     = stress_history.JxW(cell);
             for (unsigned int q = 0; q < history.size(); ++q)
-              {
-                average += history[q].stress * JxW[q];
-                volume += JxW[q];
-                sums.energy += 0.5 * (compliance * history[q].stress)
-                               * history[q].stress * JxW[q];
-              }
-            average /= volume;
+              sums.energy += 0.5 * (compliance * history[q].stress)
+                             * history[q].stress * JxW[q];
+            const SymmetricTensor<2, dim> average
+              = cell_average_stress(history, JxW);
             sums.von_mises_max
               = std::max(sums.von_mises_max, von_mises_norm(average));
 
