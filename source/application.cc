@@ -1,5 +1,7 @@
 // The command line: help, parameter listing, and running a scene.
 #include <vpcontact/application.h>
+#include <vpcontact/input_error.h>
+#include <vpcontact/parameter_file.h>
 #include <vpcontact/parameter_listing.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/sparse_cholesky.h>
@@ -11,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <muParser.h>
 #include <sstream>
 #include <string>
 
@@ -36,35 +39,6 @@ namespace VPContact
              "--print-parameters  print every parameter with its default, "
              "allowed values and\n                    documentation, as a "
              "valid .prm file (for a 2D or 3D scene).\n";
-    }
-
-
-
-    // The text of a parameter file, with the file name of every
-    // "include" statement made relative to the file's own folder (deal.II
-    // takes it relative to the working directory), so that a scene can
-    // include another scene next to it wherever the program runs.
-    std::string
-    read_parameter_file(const std::string &filename)
-    {
-      std::ifstream in(filename);
-      AssertThrow(in.good(),
-                  ExcMessage("Cannot open the parameter file '" + filename
-                             + "'. Check the path."));
-      const std::filesystem::path folder
-        = std::filesystem::path(filename).parent_path();
-      std::string text, line;
-      while (std::getline(in, line))
-        {
-          std::istringstream words(line);
-          std::string        keyword, included;
-          if ((words >> keyword >> included)
-              && (keyword == "include" || keyword == "INCLUDE")
-              && std::filesystem::path(included).is_relative())
-            line = keyword + " " + (folder / included).string();
-          text += line + '\n';
-        }
-      return text;
     }
 
 
@@ -96,6 +70,7 @@ namespace VPContact
       std::istringstream text(read_parameter_file(filename));
       Simulator<dim>::declare_parameters(prm);
       prm.parse_input(text, filename);
+      check_number_ranges(prm);
       if (resume)
         {
           prm.enter_subsection("Checkpoint");
@@ -194,29 +169,28 @@ namespace VPContact
                                "SCENE.prm (see vpcontact --help)."));
 
         const std::string &filename = args[0];
-        AssertThrow(std::ifstream(filename).good(),
-                    ExcMessage("Cannot open the parameter file '" + filename
-                               + "'. Check the path."));
         return (read_dimension(filename) == 2 ?
                   run_scene<2>(filename, resume, communicator) :
                   run_scene<3>(filename, resume, communicator));
       }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream info;
-        e.print_info(info);
-        std::string message = info.str();
-        while (!message.empty()
-               && (message.back() == '\n' || message.back() == ' '))
-          message.pop_back();
-        while (!message.empty()
-               && (message.front() == '\n' || message.front() == ' '))
-          message.erase(0, 1);
-        return report_error(shorten_paths(message), communicator);
-      }
     catch (const std::exception &e)
       {
-        return report_error(shorten_paths(e.what()), communicator);
+        return report_error(shorten_paths(error_message(e)), communicator);
+      }
+    // Exceptions that are not std::exceptions come from the libraries
+    // underneath (muParser's, for one); they too end the run with a
+    // message rather than in std::terminate.
+    catch (const mu::Parser::exception_type &e)
+      {
+        return report_error("muParser: " + e.GetMsg() + " (expression '"
+                              + e.GetExpr() + "')",
+                            communicator);
+      }
+    catch (...)
+      {
+        return report_error("an unknown exception stopped the program. "
+                            "Please report this with the parameter file.",
+                            communicator);
       }
     return 0;
   }

@@ -167,7 +167,10 @@ namespace VPContact
     for (const auto id : contact_ids)
       claim(id, "Contact boundary ids");
 
-    const auto constants = parse_function_constants(prm, "Function constants");
+    const auto constants = parse_function_constants(prm,
+                                                    section,
+                                                    "Function constants",
+                                                    coordinate_variables(dim));
     traction_function
       = parse_function_entry<dim>(prm, section, "Traction", dim, constants);
     body_force_function

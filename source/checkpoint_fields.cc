@@ -101,6 +101,27 @@ namespace VPContact
 
 
 
+    template <int dim>
+    std::map<std::string, std::uintmax_t>
+    expected_sizes(
+      const parallel::distributed::Triangulation<dim> &triangulation,
+      const std::string                               &name,
+      const std::size_t                                bytes_per_cell)
+    {
+      // deal.II's layout: the cumulative sizes of the fixed-size
+      // attachments (one unsigned int per attachment, and one more), then
+      // every cell's record in the order of the cells. save() attaches two:
+      // the vectors (SolutionTransfer) and the stress history.
+      constexpr unsigned int n_attachments = 2;
+      const std::uintmax_t header = sizeof(unsigned int) * (n_attachments + 1);
+      return {{name + "_fixed.data",
+               header
+                 + std::uintmax_t(triangulation.n_global_active_cells())
+                     * bytes_per_cell}};
+    }
+
+
+
     template void
     save(parallel::distributed::Triangulation<2> &,
          const DoFHandler<2> &,
@@ -115,6 +136,14 @@ namespace VPContact
          const StressHistory<3> &,
          const unsigned int,
          const std::string &);
+    template std::map<std::string, std::uintmax_t>
+    expected_sizes(const parallel::distributed::Triangulation<2> &,
+                   const std::string &,
+                   const std::size_t);
+    template std::map<std::string, std::uintmax_t>
+    expected_sizes(const parallel::distributed::Triangulation<3> &,
+                   const std::string &,
+                   const std::size_t);
     template void
     load(parallel::distributed::Triangulation<2> &,
          const DoFHandler<2> &,

@@ -210,8 +210,26 @@ namespace VPContact
   namespace CheckpointManifest
   {
     void
-    write(const std::string &folder)
+    write(const std::string                           &folder,
+          const std::map<std::string, std::uintmax_t> &expected_sizes)
     {
+      // A write that ran out of disk space may have ended short without an
+      // error on the way: a file that does not have the size it was meant
+      // to have is not certified.
+      for (const auto &[name, bytes] : expected_sizes)
+        {
+          std::error_code error;
+          const auto      size
+            = std::filesystem::file_size(folder + "/" + name, error);
+          AssertThrow(!error && size == bytes,
+                      dealii::ExcMessage(
+                        "the checkpoint file " + folder + "/" + name + " has "
+                        + (error ? std::string("not been written") :
+                                   std::to_string(size) + " bytes")
+                        + ", " + std::to_string(bytes)
+                        + " were meant to be written (disk full?)."));
+        }
+
       // Sorted names, so that the manifest of the same state is the same.
       std::vector<std::string> names;
       for (const auto &entry : std::filesystem::directory_iterator(folder))

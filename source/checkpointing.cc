@@ -7,10 +7,13 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <unistd.h>
 
 namespace VPContact
 {
@@ -24,6 +27,42 @@ namespace VPContact
     record_stop_signal(const int signal)
     {
       stop_signal = signal;
+    }
+
+    // The marker of a checkpoint folder (see write_folder_marker()).
+    const std::string checkpoint_marker = ".vpcontact-checkpoint";
+
+    // Whether @p folder is absent or a checkpoint folder of this program:
+    // it carries the marker, or (written before markers existed) a manifest
+    // of this program's format.
+    bool
+    absent_or_own(const std::string &folder)
+    {
+      std::error_code error;
+      if (!std::filesystem::exists(folder, error))
+        return true;
+      if (!std::filesystem::is_directory(folder, error))
+        return false;
+      if (has_folder_marker(folder, checkpoint_marker))
+        return true;
+      std::ifstream in(folder + "/" + CheckpointManifest::filename);
+      std::string   first_line;
+      std::getline(in, first_line);
+      return first_line.rfind("# vpcontact checkpoint manifest", 0) == 0;
+    }
+
+    // Whether @p inner is @p outer or lies inside it (both made absolute).
+    bool
+    is_within(const std::filesystem::path &inner,
+              const std::filesystem::path &outer)
+    {
+      const auto a
+        = std::filesystem::weakly_canonical(std::filesystem::absolute(inner));
+      const auto b
+        = std::filesystem::weakly_canonical(std::filesystem::absolute(outer));
+      const auto mismatch
+        = std::mismatch(b.begin(), b.end(), a.begin(), a.end());
+      return mismatch.first == b.end();
     }
 
     // Parameters that may change between a run and its resumption: where
@@ -243,44 +282,115 @@ namespace VPContact
 
 
   std::string
-  Checkpointing::start_writing(const MPI_Comm communicator) const
+  Checkpointing::ownership_problem() const
+  {
+    for (const std::string suffix : {"", ".new", ".old"})
+      if (!absent_or_own(checkpoint_folder + suffix))
+        return checkpoint_folder + suffix
+               + " exists and is not a checkpoint folder of vpcontact (it has "
+                 "no "
+               + checkpoint_marker
+               + " file). The program replaces and removes only folders it "
+                 "made. Choose another Checkpoint/Folder, or move that one "
+                 "away.";
+    return "";
+  }
+
+
+
+  void
+  Checkpointing::check_folders(const std::string &output_directory,
+                               const MPI_Comm     communicator) const
+  {
+    if (!writes_periodically() && !stops_on_signal())
+      return;
+    const std::string problem = problem_on_rank_zero(communicator, [&]() {
+      // The rotation renames FOLDER: that must not be a folder the run
+      // works in or writes its output into.
+      const std::filesystem::path folder(checkpoint_folder);
+      for (const auto &[name, path] :
+           {std::pair<std::string, std::filesystem::path>{
+              "the working directory",
+              std::filesystem::current_path()},
+            {"Output/Directory = " + output_directory, output_directory}})
+        AssertThrow(!is_within(path, folder),
+                    ExcMessage("the checkpoint rotation renames this folder, "
+                               "and "
+                               + name
+                               + " lies in it. Give a folder of its own, "
+                                 "e.g. the default (empty: 'checkpoint' "
+                                 "inside Output/Directory)."));
+      const std::string ownership = ownership_problem();
+      AssertThrow(ownership.empty(), ExcMessage(ownership));
+      // The folder next to which the checkpoints go must be writable now,
+      // not only when the first checkpoint is due.
+      const std::filesystem::path parent
+        = folder.has_parent_path() ? folder.parent_path() : ".";
+      std::error_code error;
+      std::filesystem::create_directories(parent, error);
+      AssertThrow(!error,
+                  ExcMessage("cannot create the folder " + parent.string()
+                             + " (" + error.message() + ")."));
+      AssertThrow(access(parent.c_str(), W_OK | X_OK) == 0,
+                  ExcMessage("cannot write into the folder " + parent.string()
+                             + "."));
+    });
+    AssertThrow(problem.empty(),
+                ExcMessage(parameter_message("Checkpoint/Folder",
+                                             checkpoint_folder,
+                                             problem)));
+  }
+
+
+
+  std::string
+  Checkpointing::start_writing(const double   n_bytes,
+                               const MPI_Comm communicator) const
   {
     const std::string new_folder = checkpoint_folder + ".new";
-    std::string       problem;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        // A leftover of a run that stopped while writing is incomplete.
-        std::error_code error;
-        std::filesystem::remove_all(new_folder, error);
-        if (!error)
-          std::filesystem::create_directories(new_folder, error);
-        if (error)
-          problem = error.message();
-      }
-    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    const std::string problem    = problem_on_rank_zero(communicator, [&]() {
+      const std::string ownership = ownership_problem();
+      AssertThrow(ownership.empty(), ExcMessage(ownership));
+      // A leftover of a run that stopped while writing is incomplete.
+      std::filesystem::remove_all(new_folder);
+      std::filesystem::create_directories(new_folder);
+      write_folder_marker(new_folder, checkpoint_marker);
+      // p4est ends the program without a message when a write fails: a
+      // checkpoint is written only where it fits, with room to spare.
+      const auto space = std::filesystem::space(new_folder);
+      AssertThrow(static_cast<double>(space.available) >= 1.5 * n_bytes,
+                  ExcMessage("only " + to_text(space.available)
+                             + " bytes are free on the disk of " + new_folder
+                             + ", and this checkpoint needs about "
+                             + to_text(std::round(n_bytes))
+                             + ". Free space on that disk or give a "
+                                  "Checkpoint/Folder on another one."));
+    });
     AssertThrow(problem.empty(),
-                ExcMessage(parameter_message(
-                  "Checkpoint/Folder",
-                  checkpoint_folder,
-                  "cannot create the folder " + new_folder + " (" + problem
-                    + "). Give a folder that can be written.")));
+                ExcMessage("Writing the checkpoint failed: " + problem
+                           + " The previous checkpoint, if any, is intact; "
+                             "the run stops here."));
     return new_folder;
   }
 
 
 
   void
-  Checkpointing::finish_writing(const CheckpointMetadata &metadata,
-                                const MPI_Comm            communicator)
+  Checkpointing::finish_writing(
+    const CheckpointMetadata                    &metadata,
+    const std::map<std::string, std::uintmax_t> &expected_sizes,
+    const MPI_Comm                               communicator)
   {
     const std::string new_folder = checkpoint_folder + ".new";
     const std::string old_folder = checkpoint_folder + ".old";
     const std::string problem    = problem_on_rank_zero(communicator, [&]() {
       write_file_atomically(new_folder + "/checkpoint.json",
                             metadata.to_json());
-      CheckpointManifest::write(new_folder);
+      CheckpointManifest::write(new_folder, expected_sizes);
       // The manifest is on disk: the new checkpoint is complete. Only now
-      // may the one before the previous go.
+      // may the one before the previous go, if it is still this program's.
+      const std::string ownership = ownership_problem();
+      AssertThrow(ownership.empty(), ExcMessage(ownership));
       std::filesystem::remove_all(old_folder);
       if (std::filesystem::exists(checkpoint_folder))
         std::filesystem::rename(checkpoint_folder, old_folder);

@@ -58,11 +58,16 @@ namespace VPContact
   DamageModel<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Damage");
-    active               = (prm.get("Model") == "gradient");
-    kappa                = prm.get_double("Diffusion");
-    iteration_cap        = prm.get_integer("Maximum active set iterations");
-    source_expression    = prm.get("Source");
-    const auto constants = parse_function_constants(prm, "Function constants");
+    active             = (prm.get("Model") == "gradient");
+    kappa              = prm.get_double("Diffusion");
+    iteration_cap      = prm.get_integer("Maximum active set iterations");
+    source_expression  = prm.get("Source");
+    initial_expression = prm.get("Initial damage");
+    const auto constants
+      = parse_function_constants(prm,
+                                 "Damage",
+                                 "Function constants",
+                                 DamageSource<dim>::variables());
     for (auto &copy : damage_source)
       copy = std::make_unique<DamageSource<dim>>(source_expression,
                                                  constants,
@@ -119,6 +124,24 @@ namespace VPContact
   DamageModel<dim>::max_iterations() const
   {
     return iteration_cap;
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  DamageModel<dim>::source_text() const
+  {
+    return source_expression;
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  DamageModel<dim>::initial_damage_text() const
+  {
+    return initial_expression;
   }
 
 

@@ -40,13 +40,13 @@ namespace VPContact
     const std::map<std::string, double> &constants,
     const std::string                   &parameter_name)
     : parser(std::make_unique<mu::Parser>())
-    , variables(names<dim>().size(), 0.)
+    , values(names<dim>().size(), 0.)
   {
     try
       {
         const auto variable_list = names<dim>();
         for (unsigned int i = 0; i < variable_list.size(); ++i)
-          parser->DefineVar(variable_list[i], &variables[i]);
+          parser->DefineVar(variable_list[i], &values[i]);
         for (const auto &[name, value] : constants)
           parser->DefineConst(name, value);
         parser->SetExpr(expression);
@@ -82,17 +82,17 @@ namespace VPContact
     constexpr unsigned int n
       = SymmetricTensor<2, dim>::n_independent_components;
     unsigned int i = 0;
-    variables[i++] = zeta;
+    values[i++]    = zeta;
     for (unsigned int c = 0; c < n; ++c)
-      variables[i++] = strain.access_raw_entry(c);
+      values[i++] = strain.access_raw_entry(c);
     for (unsigned int c = 0; c < n; ++c)
-      variables[i++] = stress.access_raw_entry(c);
-    variables[i++] = strain * strain;
-    variables[i++] = 0.5 * (stress * strain);
-    variables[i++] = von_mises_norm(stress);
+      values[i++] = stress.access_raw_entry(c);
+    values[i++] = strain * strain;
+    values[i++] = 0.5 * (stress * strain);
+    values[i++] = von_mises_norm(stress);
     for (unsigned int d = 0; d < dim; ++d)
-      variables[i++] = point[d];
-    variables[i++] = time;
+      values[i++] = point[d];
+    values[i++] = time;
     return parser->Eval();
   }
 
@@ -106,6 +106,15 @@ namespace VPContact
     for (const auto &name : names<dim>())
       text += (text.empty() ? "" : ", ") + name;
     return text;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  DamageSource<dim>::variables()
+  {
+    return names<dim>();
   }
 
 

@@ -2,6 +2,7 @@
 // global refinement.
 #include <vpcontact/geometry.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/mesh_checks.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -136,38 +137,80 @@ namespace VPContact
   Geometry<dim>::create_coarse_mesh(
     parallel::distributed::Triangulation<dim> &triangulation) const
   {
+    const std::string refinements = " and Geometry/Global refinements = "
+                                    + std::to_string(n_global_refinements);
     if (shape == Shape::box)
-      GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                subdivisions,
-                                                lower_corner,
-                                                upper_corner,
-                                                true);
+      {
+        // Before the cells exist: a box of 10^12 cells must be refused, not
+        // built until memory runs out.
+        double      n_coarse_cells = 1;
+        std::string list;
+        for (const unsigned int n : subdivisions)
+          {
+            n_coarse_cells *= n;
+            list += (list.empty() ? "" : ", ") + std::to_string(n);
+          }
+        check_mesh_memory(dim,
+                          n_coarse_cells,
+                          n_global_refinements,
+                          "Geometry/Subdivisions = " + list + refinements,
+                          triangulation.get_communicator());
+        GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                  subdivisions,
+                                                  lower_corner,
+                                                  upper_corner,
+                                                  true);
+      }
     else
       {
-        // Check the file ourselves first: GridIn's own message for a missing
-        // file does not say which parameter it came from.
-        std::ifstream in(mesh_file);
-        VPContactCheckParameter(in.good(),
-                                "Geometry/Mesh file",
-                                mesh_file_as_given,
-                                "cannot open this file (missing or not "
-                                "readable). Check the path; a relative path "
-                                "is taken from the parameter file's folder.");
-        GridIn<dim> grid_in;
-        grid_in.attach_triangulation(triangulation);
-        try
-          {
-            grid_in.read(mesh_file);
-          }
-        catch (const std::exception &e)
-          {
-            AssertThrow(false,
-                        ExcMessage("Geometry/Mesh file = " + mesh_file_as_given
-                                   + ": GridIn could not read it as a "
-                                   + std::to_string(dim)
-                                   + "D mesh. Its message was:\n" + e.what()));
-          }
+        // The file is read into a serial mesh and its cells are checked
+        // there: p4est takes only quadrilaterals (hexahedra) and fails
+        // without a message on anything else.
+        Triangulation<dim> coarse;
+        read_mesh_file(coarse);
+        check_mesh_memory(dim,
+                          coarse.n_active_cells(),
+                          n_global_refinements,
+                          "Geometry/Mesh file = " + mesh_file_as_given + " ("
+                            + std::to_string(coarse.n_active_cells())
+                            + " cells)" + refinements,
+                          triangulation.get_communicator());
+        triangulation.copy_triangulation(coarse);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::read_mesh_file(Triangulation<dim> &coarse) const
+  {
+    const std::string source = "Geometry/Mesh file = " + mesh_file_as_given;
+    // Check the file ourselves first: GridIn's own message for a missing
+    // file does not say which parameter it came from.
+    VPContactCheckParameter(std::filesystem::is_regular_file(mesh_file)
+                              && std::ifstream(mesh_file).good(),
+                            "Geometry/Mesh file",
+                            mesh_file_as_given,
+                            "cannot open this file (missing, not a regular "
+                            "file, or not readable). Check the path; a "
+                            "relative path is taken from the parameter "
+                            "file's folder.");
+    GridIn<dim> grid_in;
+    grid_in.attach_triangulation(coarse);
+    try
+      {
+        grid_in.read(mesh_file);
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(source + ": GridIn could not read it as a "
+                               + std::to_string(dim)
+                               + "D mesh. Its message was: "
+                               + error_message(e)));
+      }
+    check_mesh_cells(coarse, source);
   }
 
 

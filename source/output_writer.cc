@@ -4,6 +4,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -19,17 +20,43 @@ namespace VPContact
       std::ofstream out(temporary);
       out << content;
       out.close();
-      AssertThrow(out.good(),
-                  ExcMessage("Cannot write the file " + temporary
-                             + " (disk full or no permission?). The previous "
-                               "version of "
-                             + filename + " is left as it was."));
+      if (!out.good())
+        {
+          // The half-written temporary file is this program's own.
+          std::error_code ignored;
+          std::filesystem::remove(temporary, ignored);
+          AssertThrow(false,
+                      ExcMessage("Cannot write the file " + temporary
+                                 + " (disk full or no permission?). The "
+                                   "previous version of "
+                                 + filename + " is left as it was."));
+        }
     }
     std::error_code error;
     std::filesystem::rename(temporary, filename, error);
     AssertThrow(!error,
                 ExcMessage("Cannot rename " + temporary + " to " + filename
                            + ": " + error.message()));
+  }
+
+
+
+  void
+  write_folder_marker(const std::string &folder, const std::string &marker)
+  {
+    if (!has_folder_marker(folder, marker))
+      write_file_atomically(folder + "/" + marker,
+                            "This folder was made by vpcontact, which may "
+                            "replace or remove the files it wrote here.\n");
+  }
+
+
+
+  bool
+  has_folder_marker(const std::string &folder, const std::string &marker)
+  {
+    std::error_code error;
+    return std::filesystem::is_regular_file(folder + "/" + marker, error);
   }
 
 
@@ -147,33 +174,66 @@ namespace VPContact
   void
   OutputWriter<dim>::prepare_directory(const MPI_Comm communicator) const
   {
-    // Only rank 0 touches the file system here; the verdict is broadcast so
-    // that every rank stops together, with the same message.
-    std::string problem;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        std::error_code error;
-        std::filesystem::create_directories(output_directory, error);
-        if (error)
-          problem = "cannot create this folder (" + error.message() + ")";
-        else
-          {
-            const std::string probe = output_directory + "/.write_test";
-            std::ofstream     out(probe);
-            out << "probe\n";
-            out.close();
-            if (!out.good())
-              problem = "cannot write into this folder";
-            std::filesystem::remove(probe, error);
-          }
-      }
-    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    // Only rank 0 touches the file system here; every rank gets its
+    // verdict, so that all stop together, with the same message.
+    const std::string problem = problem_on_rank_zero(communicator, [&]() {
+      const std::vector<std::string> foreign = foreign_outputs();
+      std::string                    names;
+      for (unsigned int i = 0; i < foreign.size() && i < 5; ++i)
+        names += (i > 0 ? ", " : "") + foreign[i];
+      AssertThrow(foreign.empty(),
+                  ExcMessage("this folder holds files or folders that this "
+                             "run would replace ("
+                             + names + (foreign.size() > 5 ? ", ..." : "")
+                             + ") and that vpcontact did not write (the "
+                               "folder has no "
+                             + output_folder_marker
+                             + " file). Choose another folder, or move them "
+                               "away"));
+      std::error_code error;
+      std::filesystem::create_directories(output_directory, error);
+      AssertThrow(!error,
+                  ExcMessage("cannot create this folder (" + error.message()
+                             + ")"));
+      // The marker doubles as the test that the folder can be written.
+      write_folder_marker(output_directory, output_folder_marker);
+    });
     VPContactCheckParameter(problem.empty(),
                             "Output/Directory",
                             output_directory,
                             problem
                               + ". Give a folder that can be created "
                                 "and written.");
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  OutputWriter<dim>::foreign_outputs() const
+  {
+    // The names this program writes into an output folder.
+    const auto is_output_name = [](const std::string &name) {
+      for (const std::string prefix : {"solution_", "cycle-", "checkpoint"})
+        if (name.rfind(prefix, 0) == 0)
+          return true;
+      for (const std::string file :
+           {"statistics.csv", "convergence.csv", "solution.pvd", "reference"})
+        if (name == file || name == file + ".tmp")
+          return true;
+      return false;
+    };
+    std::vector<std::string> names;
+    std::error_code          error;
+    if (!std::filesystem::is_directory(output_directory, error)
+        || has_folder_marker(output_directory, output_folder_marker))
+      return names;
+    for (const auto &entry :
+         std::filesystem::directory_iterator(output_directory, error))
+      if (is_output_name(entry.path().filename().string()))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
   }
 
 

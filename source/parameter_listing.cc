@@ -79,16 +79,31 @@ namespace VPContact
           }
     }
 
+    // The field @p key ("value", "pattern_description") of every entry
+    // below @p tree, keyed by the entry's path.
     void
-    collect_values(const boost::property_tree::ptree  &tree,
-                   const std::string                  &prefix,
-                   std::map<std::string, std::string> &values)
+    collect_field(const boost::property_tree::ptree  &tree,
+                  const std::string                  &prefix,
+                  const std::string                  &key,
+                  std::map<std::string, std::string> &fields)
     {
       for (const auto &[name, node] : tree)
-        if (const auto value = node.get_optional<std::string>("value"))
-          values[prefix + demangle(name)] = *value;
+        if (node.get_optional<std::string>("value"))
+          fields[prefix + demangle(name)] = node.get<std::string>(key, "");
         else
-          collect_values(node, prefix + demangle(name) + "/", values);
+          collect_field(node, prefix + demangle(name) + "/", key, fields);
+    }
+
+    std::map<std::string, std::string>
+    collect_field(const dealii::ParameterHandler &prm, const std::string &key)
+    {
+      std::stringstream json;
+      prm.print_parameters(json, dealii::ParameterHandler::JSON);
+      boost::property_tree::ptree tree;
+      boost::property_tree::read_json(json, tree);
+      std::map<std::string, std::string> fields;
+      collect_field(tree, "", key, fields);
+      return fields;
     }
   } // namespace
 
@@ -110,12 +125,14 @@ namespace VPContact
   std::map<std::string, std::string>
   parameter_values(const dealii::ParameterHandler &prm)
   {
-    std::stringstream json;
-    prm.print_parameters(json, dealii::ParameterHandler::JSON);
-    boost::property_tree::ptree tree;
-    boost::property_tree::read_json(json, tree);
-    std::map<std::string, std::string> values;
-    collect_values(tree, "", values);
-    return values;
+    return collect_field(prm, "value");
+  }
+
+
+
+  std::map<std::string, std::string>
+  parameter_patterns(const dealii::ParameterHandler &prm)
+  {
+    return collect_field(prm, "pattern_description");
   }
 } // namespace VPContact

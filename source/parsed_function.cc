@@ -6,7 +6,11 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
+#include <cctype>
 #include <iostream>
+#include <muParser.h>
+#include <set>
 #include <sstream>
 
 namespace VPContact
@@ -28,17 +32,106 @@ namespace VPContact
 
 
 
-  std::map<std::string, double>
-  parse_function_constants(const ParameterHandler &prm,
-                           const std::string      &entry)
+  namespace
   {
+    // Names that muParser and deal.II's FunctionParser give a meaning of
+    // their own: functions and built-in constants. A constant of the same
+    // name would hide them or be refused by muParser with an exception.
+    const std::set<std::string> &
+    reserved_names()
+    {
+      static const std::set<std::string> names
+        = {"sin",       "cos",   "tan",   "asin",  "acos",  "atan", "sinh",
+           "cosh",      "tanh",  "asinh", "acosh", "atanh", "log2", "log10",
+           "log",       "ln",    "exp",   "sqrt",  "sign",  "rint", "abs",
+           "min",       "max",   "sum",   "avg",   "if",    "int",  "ceil",
+           "floor",     "cot",   "csc",   "sec",   "pow",   "erfc", "rand",
+           "rand_seed", "atan2", "fmod",  "_pi",   "_e"};
+      return names;
+    }
+
+    // A name as muParser reads one: a letter or '_', then letters, digits
+    // and '_'.
+    bool
+    is_identifier(const std::string &name)
+    {
+      if (name.empty()
+          || !(std::isalpha(static_cast<unsigned char>(name[0]))
+               || name[0] == '_'))
+        return false;
+      for (const char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_'))
+          return false;
+      return true;
+    }
+  } // namespace
+
+
+
+  std::map<std::string, double>
+  parse_function_constants(const ParameterHandler         &prm,
+                           const std::string              &section,
+                           const std::string              &entry,
+                           const std::vector<std::string> &variables)
+  {
+    const std::string name  = section + "/" + entry;
+    const std::string value = prm.get(entry);
+    std::string       variable_list;
+    for (const auto &v : variables)
+      variable_list += (variable_list.empty() ? "" : ", ") + v;
+
     std::map<std::string, double> constants;
-    for (const std::string &pair : Utilities::split_string_list(prm.get(entry)))
+    for (const std::string &pair : Utilities::split_string_list(value))
       {
-        const auto key_value    = Utilities::split_string_list(pair, ':');
-        constants[key_value[0]] = Utilities::string_to_double(key_value[1]);
+        const auto key_value = Utilities::split_string_list(pair, ':');
+        VPContactCheckParameter(key_value.size() == 2,
+                                name,
+                                value,
+                                "'" + pair
+                                  + "' is not a pair name:value. Write the "
+                                    "constants as 'a:1, b:2'.");
+        const std::string &constant = key_value[0];
+        VPContactCheckParameter(is_identifier(constant),
+                                name,
+                                value,
+                                "'" + constant
+                                  + "' is not a name: a constant's name "
+                                    "starts with a letter or '_' and holds "
+                                    "only letters, digits and '_'.");
+        VPContactCheckParameter(
+          std::find(variables.begin(), variables.end(), constant)
+            == variables.end(),
+          name,
+          value,
+          "'" + constant
+            + "' is a variable of the expressions of this "
+              "section ("
+            + variable_list
+            + "); a constant cannot take its place. Choose another name.");
+        VPContactCheckParameter(reserved_names().count(constant) == 0,
+                                name,
+                                value,
+                                "'" + constant
+                                  + "' is the name of a built-in function or "
+                                    "constant of the expressions. Choose "
+                                    "another name.");
+        VPContactCheckParameter(constants.count(constant) == 0,
+                                name,
+                                value,
+                                "the constant '" + constant
+                                  + "' is given twice. Give it once.");
+        constants[constant] = Utilities::string_to_double(key_value[1]);
       }
     return constants;
+  }
+
+
+
+  std::vector<std::string>
+  coordinate_variables(const unsigned int dim)
+  {
+    return (dim == 2 ? std::vector<std::string>{"x", "y", "t"} :
+                       std::vector<std::string>{"x", "y", "z", "t"});
   }
 
 
@@ -94,14 +187,23 @@ namespace VPContact
     catch (const ExceptionBase &e)
       {
         std::cerr.rdbuf(cerr_buffer);
-        std::ostringstream info;
-        e.print_info(info);
         AssertThrow(false,
                     ExcMessage(parameter_message(
                       name,
                       "'" + expression + "'",
                       "the expression does not parse; the variables are "
-                        + variables + ". muParser says:\n" + info.str())));
+                        + variables + ". muParser says:\n"
+                        + error_message(e))));
+      }
+    catch (const mu::Parser::exception_type &e)
+      {
+        std::cerr.rdbuf(cerr_buffer);
+        AssertThrow(false,
+                    ExcMessage(parameter_message(
+                      name,
+                      "'" + expression + "'",
+                      "the expression does not parse; the variables are "
+                        + variables + ". muParser says: " + e.GetMsg())));
       }
     return function;
   }

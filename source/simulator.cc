@@ -164,6 +164,7 @@ namespace VPContact
     // first solve: parameters (in the constructor), the output folder, the
     // mesh and its boundary ids, the reference compared with.
     output_writer.prepare_directory(mpi_communicator);
+    checkpointing.check_folders(output_writer.directory(), mpi_communicator);
     make_mesh();
     if (reference_solution.compares())
       reference_solution.read_index();
@@ -320,6 +321,14 @@ namespace VPContact
   Simulator<dim>::initialize_linear_solver()
   {
     TimerOutput::Scope t(computing_timer, "Build preconditioner");
+    // A matrix with an infinite entry makes the factorizations fail deep
+    // inside the libraries (ML writes a dump file of it): refuse it here.
+    AssertThrow(std::isfinite(stiffness_matrix.frobenius_norm()),
+                ExcMessage("The stiffness matrix is not finite: Material/"
+                           "Young's modulus = "
+                           + to_text(material.youngs_modulus())
+                           + " overflows with the cell sizes of this mesh. "
+                             "Rescale the units of the scene."));
     linear_solver.initialize(stiffness_matrix, all_constant_modes);
   }
 

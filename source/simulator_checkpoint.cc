@@ -26,7 +26,20 @@ namespace VPContact
   Simulator<dim>::write_checkpoint(const unsigned int n)
   {
     TimerOutput::Scope t(computing_timer, "Checkpoint");
-    const std::string  folder = checkpointing.start_writing(mpi_communicator);
+    // What deal.II writes for every cell: the cell's values of each vector
+    // and the stress history of its quadrature points (doubles), and the
+    // cell's refinement status. The file of these fixed-size records is by
+    // far the largest of a checkpoint; the p4est forest and the small files
+    // add less than the margin start_writing() asks for.
+    const std::size_t bytes_per_cell
+      = sizeof(double)
+          * (n_checkpoint_vectors * fe.n_dofs_per_cell()
+             + quadrature.size() * QuadraturePointHistory<dim>::n_values)
+        + sizeof(unsigned int);
+    const double      n_cells = triangulation.n_global_active_cells();
+    const std::string folder
+      = checkpointing.start_writing(n_cells * (bytes_per_cell + 64) + 1e6,
+                                    mpi_communicator);
 
     // The state that step n + 1 starts from. The stress predictor and the
     // damage source at the quadrature points are recomputed by the next
@@ -86,7 +99,10 @@ namespace VPContact
     metadata.counters["damage_rings_ahead"]     = damage_rings_ahead;
     metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
     metadata.parameters = checkpointing.problem_parameters();
-    checkpointing.finish_writing(metadata, mpi_communicator);
+    checkpointing.finish_writing(
+      metadata,
+      CheckpointFields::expected_sizes(triangulation, "mesh", bytes_per_cell),
+      mpi_communicator);
     pcout << "  checkpoint of step " << n << " written to "
           << checkpointing.folder() << std::endl;
   }

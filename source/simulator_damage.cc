@@ -262,6 +262,15 @@ namespace VPContact
     VectorTools::interpolate(dof_handler, initial, interpolated, damage_mask);
     damage_system.gather(interpolated, damage_owned);
     damage_system.distribute_hanging_nodes(damage_owned);
+    // A NaN compares false with everything and would pass the range check
+    // below unseen.
+    const bool finite = std::isfinite(damage_owned.l2_norm());
+    VPContactCheckParameter(finite,
+                            "Damage/Initial damage",
+                            "'" + damage_model.initial_damage_text() + "'",
+                            "the expression is not finite (NaN or infinity) "
+                            "at some node. Check it for divisions by zero, "
+                            "roots or logarithms of negative numbers.");
     const auto [lowest, highest] = damage_range(damage_owned);
     VPContactCheckParameter(lowest >= 0 && highest <= 1,
                             "Damage/Initial damage",
@@ -421,6 +430,18 @@ namespace VPContact
     damage_system.gather(solution_owned, damage_old);
     damage_exchange.copy(damage_old, damage);
     assemble_damage(false);
+    // A source that evaluates to NaN or infinity anywhere spoils the whole
+    // load; say so here rather than let CG fail on it.
+    AssertThrow(std::isfinite(damage_load.l2_norm()),
+                ExcMessage(parameter_message(
+                  "Damage/Source",
+                  "'" + damage_model.source_text() + "'",
+                  "at step " + std::to_string(n)
+                    + " (t = " + to_text(time_discretization.time(n))
+                    + ") the source is not finite (NaN or infinity) at some "
+                      "quadrature point, evaluated in the state of the step "
+                      "before. Check it for divisions by zero, roots or "
+                      "logarithms of negative numbers, and overflow.")));
     TrilinosWrappers::MPI::Vector step_rhs(damage_old);
     K.vmult(step_rhs, damage_old);
     step_rhs.sadd(-1., 1., damage_load);

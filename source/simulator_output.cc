@@ -1,5 +1,6 @@
 // The simulator's output: cell-averaged stresses, the statistics row of every
 // step, the screen, and the fields for ParaView.
+#include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
 #include <vpcontact/vertex_patches.h>
@@ -82,6 +83,36 @@ namespace VPContact
 
   template <int dim>
   void
+  Simulator<dim>::check_finite(const StepMeasures &measures,
+                               const unsigned int  n) const
+  {
+    // The state of step n is checked before anything of it is written, so
+    // that the output holds only finite steps.
+    std::string quantity;
+    if (!measures.u_finite)
+      quantity = "the displacement u";
+    else if (!std::isfinite(measures.energy))
+      quantity = "the stress (its energy)";
+    else if (!measures.zeta_finite)
+      quantity = "the damage zeta";
+    AssertThrow(
+      quantity.empty(),
+      ExcMessage(
+        "Step " + std::to_string(n)
+        + " (t = " + to_text(time_discretization.time(n)) + "): " + quantity
+        + " is not finite (NaN or infinity). Inputs that can cause this: "
+          "loads that are not finite somewhere (Boundary conditions/Traction, "
+          "Body force, Prescribed displacement), a damage source that is not "
+          "(Damage/Source), or material data whose products overflow "
+          "(Material, Viscoplasticity). The output up to the step before "
+          "is complete in "
+        + output_writer.directory() + "."));
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::postprocess_step(const unsigned int n,
                                    const double       step_wall_time)
   {
@@ -89,7 +120,8 @@ namespace VPContact
     const double       time = time_discretization.time(n);
 
     const StepMeasures measures = measure_step();
-    const double       u_max    = measures.u_max;
+    check_finite(measures, n);
+    const double u_max = measures.u_max;
     // The stress of every cell, for the fields and for the scale of the
     // stress error, only where they are needed.
     const bool write

@@ -259,6 +259,8 @@ namespace VPContact
     {
       double von_mises_max = 0, u_square_max = 0, energy = 0, damaged = 0,
              volume = 0;
+      // std::max() passes NaN by: it is counted apart.
+      bool u_finite = true, zeta_finite = true;
     };
     const SymmetricTensor<4, dim> compliance  = invert(material.stiffness());
     const bool                    with_damage = damage_model.is_active();
@@ -293,7 +295,10 @@ namespace VPContact
                   norm_square[a] += component[a] * component[a];
               }
             for (unsigned int a = 0; a < n_nodes; ++a)
-              sums.u_square_max = std::max(sums.u_square_max, norm_square[a]);
+              {
+                sums.u_square_max = std::max(sums.u_square_max, norm_square[a]);
+                sums.u_finite = sums.u_finite && std::isfinite(norm_square[a]);
+              }
 
             if (with_damage)
               {
@@ -301,6 +306,8 @@ namespace VPContact
                 for (unsigned int q = 0; q < JxW.size(); ++q)
                   {
                     sums.volume += JxW[q];
+                    sums.zeta_finite
+                      = sums.zeta_finite && std::isfinite(zeta[q]);
                     if (zeta[q] < 1. - 1e-12)
                       sums.damaged += JxW[q];
                   }
@@ -320,6 +327,13 @@ namespace VPContact
                             mpi_communicator);
     measures.energy
       = Utilities::MPI::sum(sums[0].energy + sums[1].energy, mpi_communicator);
+    measures.u_finite
+      = !Utilities::MPI::logical_or(!(sums[0].u_finite && sums[1].u_finite),
+                                    mpi_communicator);
+    measures.zeta_finite
+      = !Utilities::MPI::logical_or(!(sums[0].zeta_finite
+                                      && sums[1].zeta_finite),
+                                    mpi_communicator);
     if (with_damage)
       measures.damaged_fraction
         = Utilities::MPI::sum(sums[0].damaged + sums[1].damaged,

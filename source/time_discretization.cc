@@ -6,6 +6,15 @@
 
 namespace VPContact
 {
+  namespace
+  {
+    // The most time steps a run may have: far more than a run can afford,
+    // and small enough that n k keeps about eight correct digits.
+    constexpr double max_steps = 1e8;
+  } // namespace
+
+
+
   void
   TimeDiscretization::declare_parameters(ParameterHandler &prm)
   {
@@ -43,23 +52,25 @@ namespace VPContact
                             k,
                             "the step must lie in (0, End time = " + to_text(T)
                               + "].");
-    // A relative slack of 1e-9 accepts T = 1, k = 0.1 although 1/0.1 is not
-    // exactly 10 in binary arithmetic.
+    // The step count is checked before it is rounded to an integer: a
+    // ratio beyond what an unsigned int holds would wrap around silently.
     const double ratio = T / k;
-    n_total            = static_cast<unsigned int>(std::llround(ratio));
-    VPContactCheckParameter(std::abs(ratio - n_total) <= 1e-9 * ratio,
-                            "Time/Time step",
-                            k,
-                            "End time = " + to_text(T)
-                              + " is not a whole number of steps (T/k = "
-                              + to_text(ratio)
-                              + "). Choose k = T/N for an integer N.");
-    VPContactCheckParameter(n_total <= 100000000u,
+    VPContactCheckParameter(ratio <= max_steps + 0.5,
                             "Time/Time step",
                             k,
                             "T/k = " + to_text(ratio)
-                              + " steps is more than this program allows "
-                                "(1e8). Choose a larger step.");
+                              + " steps is more than this program allows ("
+                              + to_text(max_steps)
+                              + "). Choose a larger step.");
+    // A relative slack of 1e-9 accepts T = 1, k = 0.1 although 1/0.1 is not
+    // exactly 10 in binary arithmetic.
+    n_total = static_cast<unsigned int>(std::llround(ratio));
+    VPContactCheckParameter(
+      n_total >= 1 && std::abs(ratio - n_total) <= 1e-9 * ratio,
+      "Time/Time step",
+      k,
+      "End time = " + to_text(T) + " is not a whole number of steps (T/k = "
+        + to_text(ratio) + "). Choose k = T/N for an integer N.");
     k_given = k;
     n_given = n_total;
   }
@@ -69,7 +80,7 @@ namespace VPContact
   void
   TimeDiscretization::set_halvings(const unsigned int j)
   {
-    AssertThrow(j < 20 && n_given * std::pow(2., j) <= 1e8,
+    AssertThrow(j < 20 && n_given * std::pow(2., j) <= max_steps,
                 ExcMessage("Refining the time step " + std::to_string(j)
                            + " times would exceed 1e8 steps. Use fewer "
                              "Mesh refinement/Number of cycles or set Mesh "

@@ -73,12 +73,18 @@ namespace VPContact
           "Verification",
           "Exact damage",
           1,
-          parse_function_constants(prm, "Function constants"));
+          parse_function_constants(prm,
+                                   "Verification",
+                                   "Function constants",
+                                   coordinate_variables(dim)));
       }
     if (!prm.get("Exact displacement").empty())
       {
         const auto constants
-          = parse_function_constants(prm, "Function constants");
+          = parse_function_constants(prm,
+                                     "Verification",
+                                     "Function constants",
+                                     coordinate_variables(dim));
         exact_displacement = parse_function_entry<dim>(prm,
                                                        "Verification",
                                                        "Exact displacement",
@@ -90,7 +96,10 @@ namespace VPContact
     if (!prm.get("Exact stress").empty())
       {
         const auto constants
-          = parse_function_constants(prm, "Function constants");
+          = parse_function_constants(prm,
+                                     "Verification",
+                                     "Function constants",
+                                     coordinate_variables(dim));
         exact_stress_function = parse_function_entry<dim>(
           prm,
           "Verification",

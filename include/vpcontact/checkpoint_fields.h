@@ -9,6 +9,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -67,6 +69,22 @@ namespace VPContact
          const std::vector<TrilinosWrappers::MPI::Vector *> &vectors,
          StressHistory<dim>                                 &history,
          const unsigned int                                  n_q_points);
+
+    /**
+     * The sizes [bytes] of the files that save() meant to write under the
+     * name @p name, for the files whose size follows from the mesh:
+     * deal.II's file of the fixed-size cell records, NAME_fixed.data, with
+     * @p bytes_per_cell bytes per cell (the vectors' values on the cell,
+     * the stress history and deal.II's refinement status of the cell). The
+     * manifest certifies a checkpoint only if the files on disk have these
+     * sizes.
+     */
+    template <int dim>
+    std::map<std::string, std::uintmax_t>
+    expected_sizes(
+      const parallel::distributed::Triangulation<dim> &triangulation,
+      const std::string                               &name,
+      const std::size_t                                bytes_per_cell);
   } // namespace CheckpointFields
 } // namespace VPContact
 

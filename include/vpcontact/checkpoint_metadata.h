@@ -3,6 +3,7 @@
 #ifndef vpcontact_checkpoint_metadata_h
 #define vpcontact_checkpoint_metadata_h
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
@@ -74,10 +75,13 @@ namespace VPContact
     /**
      * Flush every regular file of @p folder to disk, write the manifest of
      * them and flush it and the folder. Throws with the file's name if a
-     * file cannot be read or written. Serial: call on one rank.
+     * file cannot be read or written, or if a file named in
+     * @p expected_sizes does not have the size recorded there (what was
+     * meant to be written). Serial: call on one rank.
      */
     void
-    write(const std::string &folder);
+    write(const std::string                           &folder,
+          const std::map<std::string, std::uintmax_t> &expected_sizes = {});
 
     /**
      * An empty string if @p folder has a manifest and every file it lists

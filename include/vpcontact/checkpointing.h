@@ -12,6 +12,7 @@
 #include <array>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -133,20 +134,37 @@ namespace VPContact
            const MPI_Comm     communicator);
 
     /**
-     * Collective: make FOLDER.new empty and return its name; the fields are
-     * then saved into it.
+     * Collective, before the run computes: throw a message naming
+     * Checkpoint/Folder if checkpoints may be written (periodically or on a
+     * signal) and FOLDER, FOLDER.new or FOLDER.old exists without being a
+     * checkpoint folder of this program (see write_folder_marker()), if
+     * FOLDER holds the working directory or Output/Directory (which the
+     * rotation would rename), or if its parent folder cannot be written.
+     */
+    void
+    check_folders(const std::string &output_directory,
+                  const MPI_Comm     communicator) const;
+
+    /**
+     * Collective: make FOLDER.new empty, mark it as this program's and
+     * return its name; the fields are then saved into it. Throws, leaving
+     * the previous checkpoint as it is, if the disk has not room for
+     * @p n_bytes with a margin.
      */
     std::string
-    start_writing(const MPI_Comm communicator) const;
+    start_writing(const double n_bytes, const MPI_Comm communicator) const;
 
     /**
      * Collective: rank 0 writes @p metadata and the manifest into
-     * FOLDER.new and rotates the folders as described above; every rank
-     * throws if that failed. Restarts the clock of Every seconds.
+     * FOLDER.new, checking the files against @p expected_sizes (file name
+     * -> bytes meant to be written), and rotates the folders as described
+     * above; every rank throws if that failed. Restarts the clock of Every
+     * seconds.
      */
     void
-    finish_writing(const CheckpointMetadata &metadata,
-                   const MPI_Comm            communicator);
+    finish_writing(const CheckpointMetadata                    &metadata,
+                   const std::map<std::string, std::uintmax_t> &expected_sizes,
+                   const MPI_Comm                               communicator);
 
     /**
      * Collective: the newest complete checkpoint among FOLDER, FOLDER.new
@@ -165,6 +183,10 @@ namespace VPContact
     check_compatibility(const CheckpointMetadata &metadata) const;
 
   private:
+    /// Why FOLDER, FOLDER.new or FOLDER.old may not be touched, or "".
+    std::string
+    ownership_problem() const;
+
     unsigned int every_steps   = 0;
     double       every_seconds = 0;
     bool         resume_run    = false;

@@ -55,6 +55,14 @@ namespace VPContact
     unsigned int
     max_iterations() const;
 
+    /// The expression of phi as the user wrote it, for messages.
+    const std::string &
+    source_text() const;
+
+    /// The expression of zeta_0 as the user wrote it, for messages.
+    const std::string &
+    initial_damage_text() const;
+
     std::string
     description() const;
 
@@ -62,6 +70,7 @@ namespace VPContact
     bool                                              active = false;
     double                                            kappa  = 0.01;
     std::string                                       source_expression;
+    std::string                                       initial_expression;
     std::array<std::unique_ptr<DamageSource<dim>>, 2> damage_source;
     std::unique_ptr<FunctionParser<dim>>              initial;
     unsigned int                                      iteration_cap = 50;

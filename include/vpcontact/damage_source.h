@@ -55,10 +55,14 @@ namespace VPContact
     static std::string
     variable_names();
 
+    /// The names of the variables, one by one.
+    static std::vector<std::string>
+    variables();
+
   private:
     std::unique_ptr<mu::Parser> parser;
     /// The values the parser reads, by variable (muParser keeps pointers).
-    mutable std::vector<double> variables;
+    mutable std::vector<double> values;
   };
 } // namespace VPContact
 

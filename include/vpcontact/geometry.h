@@ -60,6 +60,10 @@ namespace VPContact
       const parallel::distributed::Triangulation<dim> &triangulation);
 
   private:
+    /// Read the mesh file into @p coarse and check its cells.
+    void
+    read_mesh_file(Triangulation<dim> &coarse) const;
+
     enum class Shape
     {
       box,

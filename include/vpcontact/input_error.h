@@ -5,6 +5,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <exception>
 #include <sstream>
 #include <string>
 
@@ -34,6 +35,31 @@ namespace VPContact
                     const std::string &problem_and_remedy)
   {
     return section_and_entry + " = " + value + ": " + problem_and_remedy;
+  }
+
+  /**
+   * What went wrong, in words, for an exception from anywhere: for deal.II's
+   * exceptions only their message (what() would add the assertion's source
+   * location and a stack trace, which tell a user nothing), else what().
+   */
+  inline std::string
+  error_message(const std::exception &e)
+  {
+    const auto *deal = dynamic_cast<const dealii::ExceptionBase *>(&e);
+    if (deal == nullptr)
+      return e.what();
+    std::ostringstream info;
+    deal->print_info(info);
+    std::string message = info.str();
+    const auto  first   = message.find_first_not_of(" \n");
+    const auto  last    = message.find_last_not_of(" \n");
+    message
+      = (first == std::string::npos ? std::string() :
+                                      message.substr(first, last - first + 1));
+    // Exceptions declared without a message print "(none)".
+    if (message.empty() || message == "(none)")
+      message = std::string("deal.II reported ") + deal->get_exc_name();
+    return message;
   }
 } // namespace VPContact
 

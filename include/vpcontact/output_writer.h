@@ -51,6 +51,14 @@ namespace VPContact
     void
     prepare_directory(const MPI_Comm communicator) const;
 
+    /**
+     * The files and folders in Output/Directory that this run would
+     * replace although vpcontact did not write them: those with the names
+     * of its outputs, in a folder without the output marker. Serial.
+     */
+    std::vector<std::string>
+    foreign_outputs() const;
+
     /// Whether step @p n of @p n_steps writes fields.
     bool
     writes_fields_at(const unsigned int n, const unsigned int n_steps) const;
@@ -171,6 +179,22 @@ namespace VPContact
   void
   write_file_atomically(const std::string &filename,
                         const std::string &content);
+
+  /**
+   * Folders this program makes carry a marker file (@p marker, e.g.
+   * ".vpcontact-output"), so that it can tell them from a user's: it
+   * replaces or removes files only in folders that carry the marker.
+   * Writes the marker into @p folder; throws if it cannot.
+   */
+  void
+  write_folder_marker(const std::string &folder, const std::string &marker);
+
+  /// Whether @p folder carries @p marker (see write_folder_marker()).
+  bool
+  has_folder_marker(const std::string &folder, const std::string &marker);
+
+  /// The marker of an output folder.
+  inline const std::string output_folder_marker = ".vpcontact-output";
 
   /**
    * Run @p task on rank 0 of @p communicator only and return, on every

@@ -28,6 +28,14 @@ namespace VPContact
    */
   std::map<std::string, std::string>
   parameter_values(const dealii::ParameterHandler &prm);
+
+  /**
+   * The pattern of every entry of @p prm as ParameterHandler describes it
+   * ("[Double 0...MAX_DOUBLE (inclusive)]", "[List of <[Double ...]> ...]"),
+   * keyed like parameter_values().
+   */
+  std::map<std::string, std::string>
+  parameter_patterns(const dealii::ParameterHandler &prm);
 } // namespace VPContact
 
 #endif

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace VPContact
 {
@@ -39,13 +40,22 @@ namespace VPContact
                        const std::map<std::string, double> &constants = {});
 
   /**
-   * The named constants of the entry @p entry of the current subsection,
-   * written as name:value pairs ("p:55, E:1000"), for the expressions of
-   * that subsection.
+   * The named constants of the entry @p entry of the current subsection
+   * (called @p section in messages), written as name:value pairs ("p:55,
+   * E:1000"), for the expressions of that subsection, whose variables are
+   * @p variables. Throws a message naming the entry if a name is not an
+   * identifier, is one of @p variables or a built-in function of the
+   * expressions, or is given twice.
    */
   std::map<std::string, double>
-  parse_function_constants(const ParameterHandler &prm,
-                           const std::string      &entry);
+  parse_function_constants(const ParameterHandler         &prm,
+                           const std::string              &section,
+                           const std::string              &entry,
+                           const std::vector<std::string> &variables);
+
+  /// The variables of a function of position and time: x, y (z), t.
+  std::vector<std::string>
+  coordinate_variables(const unsigned int dim);
 
   /**
    * A function with dim components (a displacement) seen as a function with

@@ -264,9 +264,13 @@ namespace VPContact
       double u_max            = 0;
       double energy           = 0;
       double damaged_fraction = 0;
+      bool   u_finite         = true;
+      bool   zeta_finite      = true;
     };
     StepMeasures
     measure_step() const;
+    void
+    check_finite(const StepMeasures &measures, const unsigned int n) const;
     double
     stress_error(const double time) const;
 

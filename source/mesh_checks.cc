@@ -1,0 +1,172 @@
+// Checks of a mesh before anything computes on it: its cells, and the memory
+// the refined mesh needs.
+#include <vpcontact/input_error.h>
+#include <vpcontact/mesh_checks.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <cmath>
+#include <sstream>
+#include <unistd.h>
+
+namespace VPContact
+{
+  namespace
+  {
+    // The vertices of a cell as "(x, y), (x, y), ...", for messages.
+    template <int dim>
+    std::string
+    vertices_of(const typename Triangulation<dim>::cell_iterator &cell)
+    {
+      std::string text;
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          std::ostringstream point;
+          point.precision(6);
+          point << "(";
+          for (unsigned int d = 0; d < dim; ++d)
+            point << (d > 0 ? ", " : "") << cell->vertex(v)[d];
+          point << ")";
+          text += (v > 0 ? ", " : "") + point.str();
+        }
+      return text;
+    }
+
+    // The points where the Jacobian is checked: the Gauss points and the
+    // vertices of the reference cell. Only Jacobians are computed there, so
+    // the weights do not matter.
+    template <int dim>
+    Quadrature<dim>
+    jacobian_check_points()
+    {
+      std::vector<Point<dim>> points = QGauss<dim>(2).get_points();
+      for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
+        points.push_back(GeometryInfo<dim>::unit_cell_vertex(v));
+      return Quadrature<dim>(points, std::vector<double>(points.size(), 1.));
+    }
+
+    // The least memory [bytes] one active cell of this program takes: the
+    // mesh, the DoF numbering, the stress history at the quadrature points,
+    // the vectors and the sparse matrix of the displacement and damage
+    // problems. Lower bounds, well below what a run takes (see
+    // doc/input_checks.md), so that only meshes that certainly cannot fit
+    // are refused.
+    constexpr double bytes_per_active_cell_2d = 2000;
+    constexpr double bytes_per_active_cell_3d = 10000;
+    // Every rank holds the whole coarse mesh, in deal.II's triangulation
+    // and in p4est's connectivity.
+    constexpr double bytes_per_coarse_cell = 500;
+
+    std::string
+    gigabytes(const double bytes)
+    {
+      return to_text(std::round(bytes / 1e8) / 10) + " GB";
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  check_mesh_cells(const Triangulation<dim> &triangulation,
+                   const std::string        &source)
+  {
+    AssertThrow(triangulation.n_active_cells() > 0,
+                ExcMessage(source + ": the mesh has no cells of dimension "
+                           + std::to_string(dim)
+                           + ". Check the file and Dimension."));
+    for (const auto &cell : triangulation.active_cell_iterators())
+      AssertThrow(cell->reference_cell().is_hyper_cube(),
+                  ExcMessage(source + ": the mesh has "
+                             + (dim == 2 ? "triangles" :
+                                           "tetrahedra, prisms "
+                                           "or pyramids")
+                             + " (the first at " + vertices_of<dim>(cell)
+                             + "); this program computes on "
+                             + (dim == 2 ? "quadrilaterals" : "hexahedra")
+                             + ". Mesh the body with "
+                             + (dim == 2 ? "quadrilaterals" : "hexahedra")
+                             + " (in Gmsh: Mesh.RecombineAll = 1, or "
+                               "Mesh.SubdivisionAlgorithm = "
+                             + (dim == 2 ? "1" : "2") + ")."));
+
+    const FE_Q<dim> fe(1);
+    FEValues<dim>   fe_values(MappingQ1<dim>(),
+                            fe,
+                            jacobian_check_points<dim>(),
+                            update_jacobians);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        // Relative to the size of the cell: a Jacobian that is a rounding
+        // error of the cell's measure is a degenerate cell.
+        const double scale = std::pow(cell->diameter(), dim);
+        for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+          AssertThrow(
+            determinant(Tensor<2, dim>(fe_values.jacobian(q))) > 1e-10 * scale,
+            ExcMessage(source + ": the cell with the vertices "
+                       + vertices_of<dim>(cell)
+                       + " is inverted, degenerate or self-intersecting "
+                         "(its Jacobian is not positive everywhere). Check "
+                         "the order of its vertices and that no two "
+                         "coincide."));
+      }
+  }
+
+
+
+  void
+  check_mesh_memory(const unsigned int dim,
+                    const double       n_coarse_cells,
+                    const unsigned int n_refinements,
+                    const std::string &entries,
+                    const MPI_Comm     communicator)
+  {
+    // The machines' memory: what each node has, counted once per node.
+    MPI_Comm  node;
+    const int ierr = MPI_Comm_split_type(communicator,
+                                         MPI_COMM_TYPE_SHARED,
+                                         0,
+                                         MPI_INFO_NULL,
+                                         &node);
+    AssertThrowMPI(ierr);
+    const double node_memory = static_cast<double>(sysconf(_SC_PHYS_PAGES))
+                               * static_cast<double>(sysconf(_SC_PAGESIZE));
+    const unsigned int ranks_on_node = Utilities::MPI::n_mpi_processes(node);
+    const bool node_leader = Utilities::MPI::this_mpi_process(node) == 0;
+    MPI_Comm_free(&node);
+    const double total_memory
+      = Utilities::MPI::sum(node_leader ? node_memory : 0., communicator);
+    const double memory_per_rank
+      = Utilities::MPI::min(node_memory / ranks_on_node, communicator);
+
+    const double n_cells
+      = n_coarse_cells * std::pow(2., double(dim) * n_refinements);
+    const double active_bytes
+      = n_cells
+        * (dim == 2 ? bytes_per_active_cell_2d : bytes_per_active_cell_3d);
+    const double coarse_bytes = n_coarse_cells * bytes_per_coarse_cell;
+    AssertThrow(
+      active_bytes <= total_memory && coarse_bytes <= memory_per_rank,
+      ExcMessage(
+        entries + ": the mesh would have " + to_text(n_cells)
+        + " cells, which need at least "
+        + gigabytes(std::max(active_bytes, coarse_bytes * ranks_on_node))
+        + " of memory; the machines of this run have " + gigabytes(total_memory)
+        + (coarse_bytes > memory_per_rank ?
+             " (and every rank holds all " + to_text(n_coarse_cells)
+               + " coarse cells)" :
+             std::string())
+        + ". Use fewer cells or refinements, or more machines."));
+  }
+
+
+
+  template void
+  check_mesh_cells(const Triangulation<2> &, const std::string &);
+  template void
+  check_mesh_cells(const Triangulation<3> &, const std::string &);
+} // namespace VPContact

@@ -1,0 +1,216 @@
+// Reading a scene's parameter file: the file and its includes checked before
+// ParameterHandler reads them, and the range of the numbers it holds.
+#include <vpcontact/input_error.h>
+#include <vpcontact/parameter_file.h>
+#include <vpcontact/parameter_listing.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace VPContact
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    // Deeper include chains than this are not a scene a user wrote by hand;
+    // the limit also bounds the recursion below.
+    constexpr unsigned int max_include_depth = 32;
+
+    // Throw unless @p path names a regular file that can be opened. @p what
+    // says how it came in ("the parameter file", "included from ...").
+    void
+    check_readable_file(const std::string &path, const std::string &what)
+    {
+      std::error_code error;
+      const auto      status = fs::status(path, error);
+      AssertThrow(fs::exists(status),
+                  dealii::ExcMessage(what + " '" + path
+                                     + "' does not exist. Check the path."));
+      AssertThrow(fs::is_regular_file(status),
+                  dealii::ExcMessage(
+                    what + " '" + path
+                    + "' is not a regular file (a folder or a device). Give "
+                      "the path of a parameter file (.prm)."));
+      AssertThrow(std::ifstream(path).good(),
+                  dealii::ExcMessage(what + " '" + path
+                                     + "' cannot be read (no permission?)."));
+    }
+
+    // The file named by an "include" line, or an empty string if the line is
+    // not one. ParameterHandler accepts "include" and "INCLUDE" followed by
+    // the rest of the line as the file name.
+    std::string
+    included_file(const std::string &line)
+    {
+      std::size_t start = line.find_first_not_of(" \t");
+      if (start == std::string::npos)
+        return "";
+      const std::string rest = line.substr(start);
+      if (rest.rfind("include ", 0) != 0 && rest.rfind("INCLUDE ", 0) != 0)
+        return "";
+      std::string name = rest.substr(8);
+      name.erase(0, name.find_first_not_of(" \t"));
+      while (
+        !name.empty()
+        && (name.back() == ' ' || name.back() == '\t' || name.back() == '\r'))
+        name.pop_back();
+      return name;
+    }
+
+    // Follow the includes of @p path depth first; @p chain holds the files
+    // from the top one down to @p path (canonical names), so that a file
+    // that includes one of its own includers is found before deal.II
+    // follows the cycle for ever. @p path is opened as deal.II opens it.
+    void
+    check_includes(const std::string        &path,
+                   std::vector<std::string> &chain,
+                   const std::string        &shown_name)
+    {
+      const std::string canonical = fs::weakly_canonical(path).string();
+      for (const auto &file : chain)
+        if (file == canonical)
+          {
+            std::string cycle;
+            for (const auto &f : chain)
+              cycle += f + " -> ";
+            AssertThrow(false,
+                        dealii::ExcMessage(
+                          "The parameter files include each other in a "
+                          "cycle: "
+                          + cycle + canonical
+                          + ". Remove the include that closes it."));
+          }
+      AssertThrow(chain.size() < max_include_depth,
+                  dealii::ExcMessage("The includes of " + chain.front()
+                                     + " nest deeper than "
+                                     + std::to_string(max_include_depth)
+                                     + " files. Flatten them."));
+      chain.push_back(canonical);
+      std::ifstream in(path);
+      std::string   line;
+      for (unsigned int n = 1; std::getline(in, line); ++n)
+        {
+          const std::string name = included_file(line);
+          if (name.empty())
+            continue;
+          check_readable_file(name,
+                              "The file included in line " + std::to_string(n)
+                                + " of " + shown_name);
+          check_includes(name, chain, name);
+        }
+      chain.pop_back();
+    }
+  } // namespace
+
+
+
+  std::string
+  read_parameter_file(const std::string &filename)
+  {
+    check_readable_file(filename, "The parameter file");
+    const fs::path folder = fs::path(filename).parent_path();
+    std::ifstream  in(filename);
+    std::string    text, line;
+    while (std::getline(in, line))
+      {
+        const std::string name = included_file(line);
+        if (!name.empty() && fs::path(name).is_relative())
+          line = "include " + (folder / name).string();
+        text += line + '\n';
+      }
+
+    // The includes as deal.II will open them: those of the file itself
+    // with the paths just written, the deeper ones as written.
+    std::vector<std::string> chain = {fs::weakly_canonical(filename).string()};
+    std::istringstream       rewritten(text);
+    for (unsigned int n = 1; std::getline(rewritten, line); ++n)
+      {
+        const std::string name = included_file(line);
+        if (name.empty())
+          continue;
+        check_readable_file(name,
+                            "The file included in line " + std::to_string(n)
+                              + " of " + filename);
+        check_includes(name, chain, name);
+      }
+    return text;
+  }
+
+
+
+  namespace
+  {
+    // The numbers in an entry's value: every word between the separators
+    // of lists and maps (',', ';', ':', spaces) that reads as a whole as a
+    // real number. Words of expressions ("2*x") are not numbers.
+    std::vector<std::pair<std::string, double>>
+    numbers_in(const std::string &value)
+    {
+      std::vector<std::pair<std::string, double>> numbers;
+      std::string                                 word;
+      const auto                                  take_word = [&]() {
+        if (!word.empty())
+          {
+            char *end = nullptr;
+            errno     = 0;
+            const double x = std::strtod(word.c_str(), &end);
+            // strtod reads "inf", "nan" and overflows to HUGE_VAL with
+            // ERANGE: all are numbers this program must refuse.
+            if (end != word.c_str() && *end == '\0')
+              numbers.emplace_back(word,
+                                   errno == ERANGE && std::abs(x) > 1 ?
+                                                                      HUGE_VAL :
+                                                                      x);
+          }
+        word.clear();
+      };
+      for (const char c : value)
+        if (c == ',' || c == ';' || c == ':' || c == ' ' || c == '\t')
+          take_word();
+        else
+          word += c;
+      take_word();
+      return numbers;
+    }
+  } // namespace
+
+
+
+  void
+  check_number_ranges(const dealii::ParameterHandler &prm)
+  {
+    // Only entries whose pattern holds numbers: a folder named "1e999" is
+    // a name, not a number.
+    const auto patterns = parameter_patterns(prm);
+    for (const auto &[entry, value] : parameter_values(prm))
+      for (const auto &[word, x] : numbers_in(value))
+        {
+          const std::string &pattern = patterns.at(entry);
+          if (pattern.find("Double") == std::string::npos
+              && pattern.find("Integer") == std::string::npos)
+            break;
+          const double magnitude = std::abs(x);
+          VPContactCheckParameter(
+            std::isfinite(x)
+              && (magnitude == 0
+                  || (magnitude >= smallest_magnitude
+                      && magnitude <= largest_magnitude)),
+            entry,
+            value,
+            "the number " + word
+              + " is not one this program can compute with: a number in a "
+                "parameter file is 0 or has a magnitude between 1e-100 and "
+                "1e100 (so that products and squares of the inputs stay "
+                "finite in double precision). Rescale the units of the "
+                "scene.");
+        }
+  }
+} // namespace VPContact
