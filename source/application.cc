@@ -46,10 +46,10 @@ namespace VPContact
     // Read "Dimension" alone, skipping the other entries, so that the
     // simulator of the right dimension can then declare and read the rest.
     unsigned int
-    read_dimension(const std::string &filename)
+    read_dimension(const ParameterFile &file, const std::string &filename)
     {
       ParameterHandler   prm;
-      std::istringstream text(read_parameter_file(filename));
+      std::istringstream text(file.text);
       prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
       prm.parse_input(text, filename, "", true);
       return prm.get_integer("Dimension");
@@ -62,12 +62,13 @@ namespace VPContact
     // checkpoint.
     template <int dim>
     int
-    run_scene(const std::string &filename,
-              const bool         resume,
-              const MPI_Comm     communicator)
+    run_scene(const ParameterFile &file,
+              const std::string   &filename,
+              const bool           resume,
+              const MPI_Comm       communicator)
     {
       ParameterHandler   prm;
-      std::istringstream text(read_parameter_file(filename));
+      std::istringstream text(file.text);
       Simulator<dim>::declare_parameters(prm);
       prm.parse_input(text, filename);
       check_number_ranges(prm);
@@ -146,6 +147,9 @@ namespace VPContact
       return message;
     };
 
+    // The scene's text, once read: messages about its lines name the file
+    // and line they came from.
+    ParameterFile file;
     try
       {
         if (args.empty() || args[0] == "--help" || args[0] == "-h")
@@ -169,13 +173,15 @@ namespace VPContact
                                "SCENE.prm (see vpcontact --help)."));
 
         const std::string &filename = args[0];
-        return (read_dimension(filename) == 2 ?
-                  run_scene<2>(filename, resume, communicator) :
-                  run_scene<3>(filename, resume, communicator));
+        file                        = read_parameter_file(filename);
+        return (read_dimension(file, filename) == 2 ?
+                  run_scene<2>(file, filename, resume, communicator) :
+                  run_scene<3>(file, filename, resume, communicator));
       }
     catch (const std::exception &e)
       {
-        return report_error(shorten_paths(error_message(e)), communicator);
+        return report_error(shorten_paths(file.locate(error_message(e))),
+                            communicator);
       }
     // Exceptions that are not std::exceptions come from the libraries
     // underneath (muParser's, for one); they too end the run with a

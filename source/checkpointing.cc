@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -331,9 +332,17 @@ namespace VPContact
       AssertThrow(!error,
                   ExcMessage("cannot create the folder " + parent.string()
                              + " (" + error.message() + ")."));
-      AssertThrow(access(parent.c_str(), W_OK | X_OK) == 0,
+      // A file of a name no one else uses, made and removed again: the
+      // only test that also holds for root and for read-only mounts.
+      const std::string probe
+        = (parent / (".vpcontact-write-test-" + std::to_string(getpid())))
+            .string();
+      const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+      AssertThrow(fd >= 0,
                   ExcMessage("cannot write into the folder " + parent.string()
                              + "."));
+      close(fd);
+      std::filesystem::remove(probe);
     });
     AssertThrow(problem.empty(),
                 ExcMessage(parameter_message("Checkpoint/Folder",

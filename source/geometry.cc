@@ -196,6 +196,19 @@ namespace VPContact
                             "file, or not readable). Check the path; a "
                             "relative path is taken from the parameter "
                             "file's folder.");
+    // GridIn chooses the reader by the extension, and says only
+    // "ExcInvalidState" of one it does not know.
+    const std::string extension
+      = std::filesystem::path(mesh_file).extension().string();
+    VPContactCheckParameter(extension == ".msh" || extension == ".inp"
+                              || extension == ".ucd" || extension == ".vtk"
+                              || extension == ".unv",
+                            "Geometry/Mesh file",
+                            mesh_file_as_given,
+                            "the extension '" + extension
+                              + "' is not one of a mesh format this program "
+                                "reads: .msh (Gmsh), .inp or .ucd (UCD), "
+                                ".vtk (VTK legacy), .unv (I-DEAS).");
     GridIn<dim> grid_in;
     grid_in.attach_triangulation(coarse);
     try

@@ -94,7 +94,9 @@ namespace VPContact
                              + (dim == 2 ? "1" : "2") + ")."));
 
     const FE_Q<dim> fe(1);
-    FEValues<dim>   fe_values(MappingQ1<dim>(),
+    // FEValues keeps references to the mapping and the element.
+    const MappingQ1<dim> mapping;
+    FEValues<dim>        fe_values(mapping,
                             fe,
                             jacobian_check_points<dim>(),
                             update_jacobians);

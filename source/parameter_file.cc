@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -65,22 +66,47 @@ namespace VPContact
       return name;
     }
 
-    // Follow the includes of @p path depth first; @p chain holds the files
-    // from the top one down to @p path (canonical names), so that a file
-    // that includes one of its own includers is found before deal.II
-    // follows the cycle for ever. @p path is opened as deal.II opens it.
+    // Whether @p line is valid UTF-8: the parameters are handled as JSON
+    // (the listing, the checkpoint's record), which holds only UTF-8.
+    bool
+    is_utf8(const std::string &line)
+    {
+      for (std::size_t i = 0; i < line.size(); ++i)
+        {
+          const auto         c = static_cast<unsigned char>(line[i]);
+          const unsigned int n = (c < 0x80)           ? 0 :
+                                 ((c & 0xE0) == 0xC0) ? 1 :
+                                 ((c & 0xF0) == 0xE0) ? 2 :
+                                 ((c & 0xF8) == 0xF0) ? 3 :
+                                                        4;
+          if (n == 4 || i + n >= line.size())
+            return false;
+          // The n bytes that continue the character are 10xxxxxx.
+          for (unsigned int k = 0; k < n; ++k)
+            if ((static_cast<unsigned char>(line[++i]) & 0xC0) != 0x80)
+              return false;
+        }
+      return true;
+    }
+
+    // Append the lines of @p path to @p file, with every "include" line
+    // replaced by the lines of the file it names (a relative name taken
+    // from the folder of the file that includes it), depth first. @p chain
+    // holds the files from the top one down to @p path (canonical names),
+    // so that a file that includes one of its own includers is refused
+    // before the recursion runs away.
     void
-    check_includes(const std::string        &path,
-                   std::vector<std::string> &chain,
-                   const std::string        &shown_name)
+    append_with_includes(const std::string        &path,
+                         std::vector<std::string> &chain,
+                         ParameterFile            &file)
     {
       const std::string canonical = fs::weakly_canonical(path).string();
-      for (const auto &file : chain)
-        if (file == canonical)
+      for (const auto &f : chain)
+        if (f == canonical)
           {
             std::string cycle;
-            for (const auto &f : chain)
-              cycle += f + " -> ";
+            for (const auto &g : chain)
+              cycle += g + " -> ";
             AssertThrow(false,
                         dealii::ExcMessage(
                           "The parameter files include each other in a "
@@ -94,17 +120,32 @@ namespace VPContact
                                      + std::to_string(max_include_depth)
                                      + " files. Flatten them."));
       chain.push_back(canonical);
-      std::ifstream in(path);
-      std::string   line;
+      const fs::path folder = fs::path(path).parent_path();
+      std::ifstream  in(path);
+      std::string    line;
       for (unsigned int n = 1; std::getline(in, line); ++n)
         {
+          // Editors on Windows may start a file with a byte order mark.
+          if (n == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+            line.erase(0, 3);
+          AssertThrow(is_utf8(line),
+                      dealii::ExcMessage(
+                        "Line " + std::to_string(n) + " of " + path
+                        + " is not UTF-8 text. Save the parameter file as "
+                          "UTF-8."));
           const std::string name = included_file(line);
           if (name.empty())
-            continue;
-          check_readable_file(name,
+            {
+              file.text += line + '\n';
+              file.origins.emplace_back(path, n);
+              continue;
+            }
+          const std::string included
+            = fs::path(name).is_relative() ? (folder / name).string() : name;
+          check_readable_file(included,
                               "The file included in line " + std::to_string(n)
-                                + " of " + shown_name);
-          check_includes(name, chain, name);
+                                + " of " + path);
+          append_with_includes(included, chain, file);
         }
       chain.pop_back();
     }
@@ -112,36 +153,33 @@ namespace VPContact
 
 
 
-  std::string
+  ParameterFile
   read_parameter_file(const std::string &filename)
   {
     check_readable_file(filename, "The parameter file");
-    const fs::path folder = fs::path(filename).parent_path();
-    std::ifstream  in(filename);
-    std::string    text, line;
-    while (std::getline(in, line))
-      {
-        const std::string name = included_file(line);
-        if (!name.empty() && fs::path(name).is_relative())
-          line = "include " + (folder / name).string();
-        text += line + '\n';
-      }
+    ParameterFile            file;
+    std::vector<std::string> chain;
+    append_with_includes(filename, chain, file);
+    return file;
+  }
 
-    // The includes as deal.II will open them: those of the file itself
-    // with the paths just written, the deeper ones as written.
-    std::vector<std::string> chain = {fs::weakly_canonical(filename).string()};
-    std::istringstream       rewritten(text);
-    for (unsigned int n = 1; std::getline(rewritten, line); ++n)
-      {
-        const std::string name = included_file(line);
-        if (name.empty())
-          continue;
-        check_readable_file(name,
-                            "The file included in line " + std::to_string(n)
-                              + " of " + filename);
-        check_includes(name, chain, name);
-      }
-    return text;
+
+
+  std::string
+  ParameterFile::locate(const std::string &message) const
+  {
+    // ParameterHandler writes "Line <N> of file <F>" with N the line of the
+    // text it was given.
+    static const std::regex place("Line <([0-9]+)> of file <[^>]*>");
+    std::smatch             match;
+    if (!std::regex_search(message, match, place))
+      return message;
+    const unsigned long n = std::stoul(match[1].str());
+    if (n == 0 || n > origins.size())
+      return message;
+    const auto &[path, line] = origins[n - 1];
+    return match.prefix().str() + "Line <" + std::to_string(line)
+           + "> of file <" + path + ">" + match.suffix().str();
   }
 
 

@@ -10,6 +10,7 @@
 #include <cctype>
 #include <iostream>
 #include <muParser.h>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -166,6 +167,15 @@ namespace VPContact
                               + " components separated by ';', found "
                               + std::to_string(parts.size()) + ".");
 
+    // rand() gives another value in every evaluation, on every rank and
+    // after a resume: a result that cannot be reproduced.
+    static const std::regex random("(^|[^A-Za-z0-9_])rand(_seed)? *\\(");
+    VPContactCheckParameter(!std::regex_search(expression, random),
+                            name,
+                            "'" + expression + "'",
+                            "rand() makes the run irreproducible (other "
+                            "values on every rank, in every step and after "
+                            "a resume). Give a deterministic expression.");
     const std::string variables
       = (dim == 2 ? "x,y,t" : (dim == 3 ? "x,y,z,t" : "x,t"));
     auto function = std::make_unique<FunctionParser<dim>>(n_components);

@@ -7,23 +7,38 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace VPContact
 {
   /**
-   * The text of the parameter file @p filename, ready for
-   * ParameterHandler::parse_input(). Throws a message naming the file if
-   * it, or a file it includes (at any depth), is not a readable regular
-   * file, or if the includes form a cycle (deal.II would recurse until the
-   * stack overflows).
-   *
-   * The file name of every "include" statement of @p filename is made
-   * relative to the file's own folder (deal.II takes it relative to the
-   * working directory), so that a scene can include another scene next to
-   * it wherever the program runs. Files included from included files are
-   * opened by deal.II as written, and checked here the same way.
+   * A parameter file with its includes written out: the text that
+   * ParameterHandler::parse_input() reads, and for every line of it the
+   * file and line it came from.
    */
-  std::string
+  struct ParameterFile
+  {
+    std::string                                       text;
+    std::vector<std::pair<std::string, unsigned int>> origins;
+
+    /**
+     * @p message (of ParameterHandler, about a line of text) with the line
+     * number of the text replaced by the file and line it came from.
+     */
+    std::string
+    locate(const std::string &message) const;
+  };
+
+  /**
+   * The parameter file @p filename with every "include" statement replaced
+   * by the file it names, at any depth; a relative name is taken from the
+   * folder of the file that holds the include (deal.II would take it from
+   * the working directory). Throws a message naming the file if it, or a
+   * file it includes, is not a readable regular file, or if the includes
+   * form a cycle (deal.II would recurse until the stack overflows).
+   */
+  ParameterFile
   read_parameter_file(const std::string &filename);
 
   /**
