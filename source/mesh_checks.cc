@@ -151,18 +151,18 @@ namespace VPContact
       = n_cells
         * (dim == 2 ? bytes_per_active_cell_2d : bytes_per_active_cell_3d);
     const double coarse_bytes = n_coarse_cells * bytes_per_coarse_cell;
-    AssertThrow(
-      active_bytes <= total_memory && coarse_bytes <= memory_per_rank,
-      ExcMessage(
-        entries + ": the mesh would have " + to_text(n_cells)
-        + " cells, which need at least "
-        + gigabytes(std::max(active_bytes, coarse_bytes * ranks_on_node))
-        + " of memory; the machines of this run have " + gigabytes(total_memory)
-        + (coarse_bytes > memory_per_rank ?
-             " (and every rank holds all " + to_text(n_coarse_cells)
-               + " coarse cells)" :
-             std::string())
-        + ". Use fewer cells or refinements, or more machines."));
+    AssertThrow(active_bytes <= total_memory && coarse_bytes <= memory_per_rank,
+                ExcMessage(
+                  entries + ": the mesh would have " + to_text(n_cells)
+                  + " cells, which need at least "
+                  + gigabytes(
+                    std::max(active_bytes, coarse_bytes * ranks_on_node))
+                  + " of memory, more than the machines of this run have"
+                  + (coarse_bytes > memory_per_rank ?
+                       " (every rank holds all " + to_text(n_coarse_cells)
+                         + " coarse cells)" :
+                       std::string())
+                  + ". Use fewer cells or refinements, or more machines."));
   }
 
 

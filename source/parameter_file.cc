@@ -26,23 +26,25 @@ namespace VPContact
     constexpr unsigned int max_include_depth = 32;
 
     // Throw unless @p path names a regular file that can be opened. @p what
-    // says how it came in ("the parameter file", "included from ...").
+    // names the file and says how it came in ("The parameter file 'a.prm'",
+    // "The file 'b.prm' included in line 3 of a.prm").
     void
     check_readable_file(const std::string &path, const std::string &what)
     {
       std::error_code error;
       const auto      status = fs::status(path, error);
       AssertThrow(fs::exists(status),
-                  dealii::ExcMessage(what + " '" + path
-                                     + "' does not exist. Check the path."));
+                  dealii::ExcMessage(what
+                                     + " does not exist. Check the "
+                                       "path."));
       AssertThrow(fs::is_regular_file(status),
                   dealii::ExcMessage(
-                    what + " '" + path
-                    + "' is not a regular file (a folder or a device). Give "
+                    what
+                    + " is not a regular file (a folder or a device). Give "
                       "the path of a parameter file (.prm)."));
       AssertThrow(std::ifstream(path).good(),
-                  dealii::ExcMessage(what + " '" + path
-                                     + "' cannot be read (no permission?)."));
+                  dealii::ExcMessage(what
+                                     + " cannot be read (no permission?)."));
     }
 
     // The file named by an "include" line, or an empty string if the line is
@@ -143,8 +145,8 @@ namespace VPContact
           const std::string included
             = fs::path(name).is_relative() ? (folder / name).string() : name;
           check_readable_file(included,
-                              "The file included in line " + std::to_string(n)
-                                + " of " + path);
+                              "The file '" + name + "' included in line "
+                                + std::to_string(n) + " of " + path);
           append_with_includes(included, chain, file);
         }
       chain.pop_back();
@@ -156,7 +158,7 @@ namespace VPContact
   ParameterFile
   read_parameter_file(const std::string &filename)
   {
-    check_readable_file(filename, "The parameter file");
+    check_readable_file(filename, "The parameter file '" + filename + "'");
     ParameterFile            file;
     std::vector<std::string> chain;
     append_with_includes(filename, chain, file);

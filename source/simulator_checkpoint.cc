@@ -29,8 +29,8 @@ namespace VPContact
     // What deal.II writes for every cell: the cell's values of each vector
     // and the stress history of its quadrature points (doubles), and the
     // cell's refinement status. The file of these fixed-size records is by
-    // far the largest of a checkpoint; the p4est forest and the small files
-    // add less than the margin start_writing() asks for.
+    // far the largest of a checkpoint; the p4est forest takes less than 64
+    // bytes a cell, the small files less than 64 kB.
     const std::size_t bytes_per_cell
       = sizeof(double)
           * (n_checkpoint_vectors * fe.n_dofs_per_cell()
@@ -38,7 +38,7 @@ namespace VPContact
         + sizeof(unsigned int);
     const double      n_cells = triangulation.n_global_active_cells();
     const std::string folder
-      = checkpointing.start_writing(n_cells * (bytes_per_cell + 64) + 1e6,
+      = checkpointing.start_writing(n_cells * (bytes_per_cell + 64) + 65536,
                                     mpi_communicator);
 
     // The state that step n + 1 starts from. The stress predictor and the
