@@ -38,9 +38,11 @@ namespace VPContact
     prm.enter_subsection("Material");
     const double E_in  = prm.get_double("Young's modulus");
     const double nu_in = prm.get_double("Poisson's ratio");
-    const auto   hyp   = (prm.get("Plane hypothesis") == "plane stress" ?
-                            PlaneHypothesis::plane_stress :
-                            PlaneHypothesis::plane_strain);
+    // As written: 0.4999999999999 must not read as 0.5 in a message.
+    const std::string nu_text = prm.get("Poisson's ratio");
+    const auto        hyp     = (prm.get("Plane hypothesis") == "plane stress" ?
+                                   PlaneHypothesis::plane_stress :
+                                   PlaneHypothesis::plane_strain);
     prm.leave_subsection();
 
     VPContactCheckParameter(E_in > 0,
@@ -57,6 +59,21 @@ namespace VPContact
       nu_in,
       "outside (-1, 0.5), the elastic tensor is not positive definite (at 0.5 "
       "the material is incompressible). Give -1 < nu < 0.5.");
+    // Near nu = 1/2 the bulk modulus outgrows the shear modulus without
+    // bound (lambda/mu = 2 nu/(1 - 2 nu)): Q1 elements lock, and the
+    // linear solves lose as many digits as lambda/mu has. Plane stress
+    // keeps lambda bounded and is not affected.
+    constexpr double max_lame_ratio = 1e6;
+    VPContactCheckParameter(
+      (dim == 2 && hyp == PlaneHypothesis::plane_stress)
+        || 2. * nu_in <= max_lame_ratio * (1. - 2. * nu_in),
+      "Material/Poisson's ratio",
+      nu_text,
+      "the material is so nearly incompressible (lambda/mu = "
+        + to_text(2. * nu_in / (1. - 2. * nu_in))
+        + " > 1e6) that the displacement elements lock and the results "
+          "lose their digits. Give nu <= 0.499999 (the near-incompressible "
+          "scenes of prm/stiff use 0.4999).");
     initialize(E_in, nu_in, hyp);
   }
 

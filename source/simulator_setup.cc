@@ -1,5 +1,6 @@
 // The simulator's mesh, degrees of freedom, constraints and sparsity.
 #include <vpcontact/input_error.h>
+#include <vpcontact/rigid_motions.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -130,6 +131,15 @@ namespace VPContact
                         locally_relevant_dofs,
                         mpi_communicator);
       }
+
+    // With all contact nodes in the stick set, the constraints now hold
+    // the body as firmly as they ever will.
+    check_rigid_motions_held(
+      dof_handler,
+      constraints,
+      "Hold it with a boundary of Boundary conditions/Clamped boundary ids, "
+      "Roller boundary ids or Prescribed displacement boundary ids, or with "
+      "friction on the contact boundary (Contact/Friction bound > 0).");
 
     rhs.reinit(locally_owned_dofs, mpi_communicator);
     find_plain_rhs_cells();
