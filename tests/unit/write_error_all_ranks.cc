@@ -7,6 +7,8 @@
 // reach every rank. Each write is made to fail with a folder in the way of
 // its temporary file (as root, permissions would not stop it). Serial and on
 // 2 ranks.
+#include <vpcontact/output_writer.h>
+
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
@@ -31,6 +33,9 @@ namespace
       {
         std::filesystem::remove_all(folder);
         std::filesystem::create_directories(folder + "/" + in_the_way);
+        // The folder of an earlier run of the program, which it may write
+        // into again.
+        write_folder_marker(folder, output_folder_marker);
       }
     MPI_Barrier(comm);
 
