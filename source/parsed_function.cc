@@ -184,6 +184,7 @@ namespace VPContact
     std::ostringstream    muparser_diagnostics;
     std::streambuf *const cerr_buffer
       = std::cerr.rdbuf(muparser_diagnostics.rdbuf());
+    std::string problem;
     try
       {
         function->initialize(variables, parts, constants, true);
@@ -192,29 +193,22 @@ namespace VPContact
         // with the parameter's name, and not in the middle of assembly.
         Vector<double> values(n_components);
         function->vector_value(Point<dim>(), values);
-        std::cerr.rdbuf(cerr_buffer);
       }
     catch (const ExceptionBase &e)
       {
-        std::cerr.rdbuf(cerr_buffer);
-        AssertThrow(false,
-                    ExcMessage(parameter_message(
-                      name,
-                      "'" + expression + "'",
-                      "the expression does not parse; the variables are "
-                        + variables + ". muParser says:\n"
-                        + error_message(e))));
+        problem = error_message(e);
       }
+    // muParser's own exceptions are not std::exceptions.
     catch (const mu::Parser::exception_type &e)
       {
-        std::cerr.rdbuf(cerr_buffer);
-        AssertThrow(false,
-                    ExcMessage(parameter_message(
-                      name,
-                      "'" + expression + "'",
-                      "the expression does not parse; the variables are "
-                        + variables + ". muParser says: " + e.GetMsg())));
+        problem = e.GetMsg();
       }
+    std::cerr.rdbuf(cerr_buffer);
+    VPContactCheckParameter(problem.empty(),
+                            name,
+                            "'" + expression + "'",
+                            "the expression does not parse; the variables are "
+                              + variables + ". muParser says:\n" + problem);
     return function;
   }
 
