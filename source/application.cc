@@ -152,6 +152,9 @@ namespace VPContact
     ParameterFile file;
     try
       {
+        AssertThrow(!(resume && args.empty()),
+                    ExcMessage("--resume needs the scene to continue: "
+                               "vpcontact --resume SCENE.prm."));
         if (args.empty() || args[0] == "--help" || args[0] == "-h")
           {
             if (rank_zero)

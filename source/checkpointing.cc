@@ -12,6 +12,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <limits.h>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -202,6 +203,10 @@ namespace VPContact
     prm.leave_subsection();
     if (checkpoint_folder.empty())
       checkpoint_folder = output_directory + "/checkpoint";
+    // "ck/." and "a/.." name the folders "ck" and "." (whose .new would
+    // otherwise be "ck/..new", inside it).
+    checkpoint_folder
+      = std::filesystem::path(checkpoint_folder).lexically_normal().string();
     while (checkpoint_folder.size() > 1 && checkpoint_folder.back() == '/')
       checkpoint_folder.pop_back();
 
@@ -209,6 +214,15 @@ namespace VPContact
     for (const auto &[entry, value] : parameter_values(prm))
       if (!may_change_on_resume(entry))
         parameters[entry] = value;
+  }
+
+
+
+  void
+  Checkpointing::record_problem_input(const std::string &entry,
+                                      const std::string &value)
+  {
+    parameters[entry] = value;
   }
 
 
@@ -323,6 +337,12 @@ namespace VPContact
                                  "inside Output/Directory)."));
       const std::string ownership = ownership_problem();
       AssertThrow(ownership.empty(), ExcMessage(ownership));
+      // FOLDER.new and FOLDER.old must be names the file system takes.
+      AssertThrow(folder.filename().string().size() + 4 <= NAME_MAX,
+                  ExcMessage("the name is too long for the file system with "
+                             "'.new' and '.old' appended (at most "
+                             + std::to_string(NAME_MAX - 4)
+                             + " characters). Give a shorter one."));
       // The folder next to which the checkpoints go must be writable now,
       // not only when the first checkpoint is due.
       const std::filesystem::path parent

@@ -142,7 +142,10 @@ namespace VPContact
     // FESystem vector that holds it (exact in a double up to 2^53).
     TrilinosWrappers::MPI::Vector index_owned(locally_owned_dofs, communicator);
     full_position.clear();
-    types::global_dof_index next = compact_owned.nth_index_in_set(0);
+    // A rank may own no cell (and no damage node) at all.
+    types::global_dof_index next
+      = (compact_owned.n_elements() > 0 ? compact_owned.nth_index_in_set(0) :
+                                          0);
     for (const auto dof : owned_damage_dofs)
       {
         index_owned(dof) = static_cast<double>(next++);

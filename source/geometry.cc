@@ -9,6 +9,8 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 
+#include <boost/crc.hpp>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -116,6 +118,7 @@ namespace VPContact
                         .string();
       }
     n_global_refinements = prm.get_integer("Global refinements");
+    n_finest_refinements = n_global_refinements;
     prm.leave_subsection();
   }
 
@@ -152,7 +155,7 @@ namespace VPContact
           }
         check_mesh_memory(dim,
                           n_coarse_cells,
-                          n_global_refinements,
+                          n_finest_refinements,
                           "Geometry/Subdivisions = " + list + refinements,
                           triangulation.get_communicator());
         GridGenerator::subdivided_hyper_rectangle(triangulation,
@@ -170,7 +173,7 @@ namespace VPContact
         read_mesh_file(coarse);
         check_mesh_memory(dim,
                           coarse.n_active_cells(),
-                          n_global_refinements,
+                          n_finest_refinements,
                           "Geometry/Mesh file = " + mesh_file_as_given + " ("
                             + std::to_string(coarse.n_active_cells())
                             + " cells)" + refinements,
@@ -188,7 +191,8 @@ namespace VPContact
     const std::string source = "Geometry/Mesh file = " + mesh_file_as_given;
     // Check the file ourselves first: GridIn's own message for a missing
     // file does not say which parameter it came from.
-    VPContactCheckParameter(std::filesystem::is_regular_file(mesh_file)
+    std::error_code error;
+    VPContactCheckParameter(std::filesystem::is_regular_file(mesh_file, error)
                               && std::ifstream(mesh_file).good(),
                             "Geometry/Mesh file",
                             mesh_file_as_given,
@@ -215,6 +219,14 @@ namespace VPContact
       {
         grid_in.read(mesh_file);
       }
+    catch (const std::bad_alloc &)
+      {
+        AssertThrow(false,
+                    ExcMessage(source
+                               + ": reading it needs more memory than this "
+                                 "machine has (does the file announce more "
+                                 "vertices or cells than it holds?)."));
+      }
     catch (const std::exception &e)
       {
         AssertThrow(false,
@@ -224,6 +236,44 @@ namespace VPContact
                                + error_message(e)));
       }
     check_mesh_cells(coarse, source);
+  }
+
+
+
+  template <int dim>
+  std::string
+  Geometry<dim>::mesh_file_checksum() const
+  {
+    if (shape == Shape::box)
+      return "";
+    std::ifstream in(mesh_file, std::ios::binary);
+    if (!in)
+      return "";
+    boost::crc_32_type crc;
+    char               buffer[1 << 16];
+    while (in.read(buffer, sizeof(buffer)) || in.gcount() > 0)
+      crc.process_bytes(buffer, in.gcount());
+    char text[16];
+    std::snprintf(text, sizeof(text), "%08x", crc.checksum());
+    return text;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Geometry<dim>::global_refinements() const
+  {
+    return n_global_refinements;
+  }
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::set_finest_refinements(const unsigned int n)
+  {
+    n_finest_refinements = n;
   }
 
 

@@ -1,4 +1,5 @@
 // The section "Solver" and the solution of the displacement system.
+#include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/linear_solver.h>
 
@@ -74,10 +75,12 @@ namespace VPContact
     max_iterations       = prm.get_integer("Maximum linear iterations");
     second_thread_wanted = prm.get_bool("Second thread");
     prm.leave_subsection();
-    VPContactCheckParameter(relative_tolerance > 0,
+    // At 1 the start vector already meets the tolerance, and no step would
+    // be solved at all.
+    VPContactCheckParameter(relative_tolerance > 0 && relative_tolerance < 1,
                             "Solver/Relative tolerance",
                             relative_tolerance,
-                            "must be positive, e.g. 1e-10.");
+                            "must lie in (0, 1), e.g. 1e-10.");
     // CHOLMOD factorizes on one process; under mpirun the matrix is split
     // over the ranks, and MUMPS is the distributed factorization.
     VPContactCheckParameter(solver_method != Method::cholesky
@@ -195,12 +198,11 @@ namespace VPContact
   double
   LinearSolver::checked_norm(const TrilinosWrappers::MPI::Vector &b)
   {
-    const double b_norm = b.l2_norm();
-    AssertThrow(std::isfinite(b_norm),
+    AssertThrow(all_finite(b, b.get_mpi_communicator()),
                 ExcMessage("The right-hand side of the displacement system "
                            "is not finite (NaN or Inf). Check the load "
                            "expressions in 'Boundary conditions'."));
-    return b_norm;
+    return b.l2_norm();
   }
 
 

@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <unistd.h>
@@ -60,6 +61,83 @@ namespace VPContact
     // and in p4est's connectivity.
     constexpr double bytes_per_coarse_cell = 500;
 
+    // Throw if a vertex of the mesh lies inside a boundary face of another
+    // cell: two cells that do not share the whole face, so that the body
+    // is cut along it (deal.II takes such a face for boundary, and p4est
+    // cannot order such a mesh on several ranks). Only boundary vertices
+    // can do this, and only boundary faces can hold them; the vertices are
+    // sorted by x so that each face looks at those within its extent.
+    template <int dim>
+    void
+    check_conforming(const Triangulation<dim> &triangulation,
+                     const std::string        &source)
+    {
+      const std::vector<Point<dim>> &vertices = triangulation.get_vertices();
+      std::vector<bool>              on_boundary(vertices.size(), false);
+      for (const auto &face : triangulation.active_face_iterators())
+        if (face->at_boundary())
+          for (const unsigned int v : face->vertex_indices())
+            on_boundary[face->vertex_index(v)] = true;
+      std::vector<std::pair<double, unsigned int>> by_x;
+      for (unsigned int i = 0; i < vertices.size(); ++i)
+        if (on_boundary[i])
+          by_x.emplace_back(vertices[i][0], i);
+      std::sort(by_x.begin(), by_x.end());
+
+      for (const auto &face : triangulation.active_face_iterators())
+        if (face->at_boundary())
+          {
+            const double tolerance = 1e-10 * face->diameter();
+            Point<dim>   lower = face->vertex(0), upper = face->vertex(0);
+            for (const unsigned int v : face->vertex_indices())
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  lower[d] = std::min(lower[d], face->vertex(v)[d]);
+                  upper[d] = std::max(upper[d], face->vertex(v)[d]);
+                }
+            // The face's line (2D) or plane (3D): a point and a unit normal.
+            const Point<dim> centre = face->center();
+            Tensor<1, dim>   normal;
+            if (dim == 2)
+              {
+                const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
+                normal[0]              = -t[1];
+                normal[1]              = t[0];
+              }
+            else
+              normal = cross_product_3d(face->vertex(3) - face->vertex(0),
+                                        face->vertex(2) - face->vertex(1));
+            normal /= normal.norm();
+            for (auto it
+                 = std::lower_bound(by_x.begin(),
+                                    by_x.end(),
+                                    std::make_pair(lower[0] - tolerance, 0u));
+                 it != by_x.end() && it->first <= upper[0] + tolerance;
+                 ++it)
+              {
+                const Point<dim> &p      = vertices[it->second];
+                bool              inside = true;
+                for (const unsigned int v : face->vertex_indices())
+                  inside = inside && face->vertex_index(v) != it->second;
+                for (unsigned int d = 0; d < dim; ++d)
+                  inside = inside && p[d] > lower[d] - tolerance
+                           && p[d] < upper[d] + tolerance;
+                AssertThrow(
+                  !inside || std::abs((p - centre) * normal) > tolerance,
+                  ExcMessage(
+                    source + ": the vertex (" + to_text(p[0]) + ", "
+                    + to_text(p[1])
+                    + (dim == 3 ? ", " + to_text(p[dim - 1]) : std::string())
+                    + ") lies inside a face of another "
+                      "cell: the cells there do not share "
+                      "whole faces (a hanging vertex), and "
+                      "the body would be cut along that "
+                      "face. Mesh it so that neighbouring "
+                      "cells share their faces."));
+              }
+          }
+    }
+
     std::string
     gigabytes(const double bytes)
     {
@@ -94,6 +172,8 @@ namespace VPContact
                              + (dim == 2 ? "1" : "2") + ")."));
 
     const FE_Q<dim> fe(1);
+    check_conforming(triangulation, source);
+
     // FEValues keeps references to the mapping and the element.
     const MappingQ1<dim> mapping;
     FEValues<dim>        fe_values(mapping,

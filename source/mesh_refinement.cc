@@ -168,6 +168,42 @@ namespace VPContact
 
   template <int dim>
   unsigned int
+  MeshRefinement<dim>::finest_refinements(
+    const unsigned int global_refinements) const
+  {
+    if (cycles == 1)
+      return global_refinements;
+    if (refinement == Strategy::adaptive)
+      {
+        VPContactCheckParameter(global_refinements < maximum_level,
+                                "Mesh refinement/Maximum level",
+                                maximum_level,
+                                "Geometry/Global refinements = "
+                                  + std::to_string(global_refinements)
+                                  + " already reaches it: the adaptive cycles "
+                                    "could refine nothing and would repeat "
+                                    "the same run. Raise it.");
+        return global_refinements;
+      }
+    const unsigned int finest = global_refinements + cycles - 1;
+    VPContactCheckParameter(finest <= maximum_level,
+                            "Mesh refinement/Number of cycles",
+                            cycles,
+                            "with Geometry/Global refinements = "
+                              + std::to_string(global_refinements)
+                              + " the last uniform cycle would refine the "
+                                "mesh to level "
+                              + std::to_string(finest)
+                              + ", beyond Mesh refinement/Maximum level = "
+                              + std::to_string(maximum_level)
+                              + ". Use fewer cycles or raise the level.");
+    return finest;
+  }
+
+
+
+  template <int dim>
+  unsigned int
   MeshRefinement<dim>::n_cycles() const
   {
     return cycles;

@@ -33,10 +33,14 @@ namespace VPContact
     {
       std::error_code error;
       const auto      status = fs::status(path, error);
+      // A loop of symbolic links, for one, is an error other than "no such
+      // file".
+      AssertThrow(!error || error == std::errc::no_such_file_or_directory,
+                  dealii::ExcMessage(what + " cannot be examined ("
+                                     + error.message() + "). Check the path."));
       AssertThrow(fs::exists(status),
                   dealii::ExcMessage(what
-                                     + " does not exist. Check the "
-                                       "path."));
+                                     + " does not exist. Check the path."));
       AssertThrow(fs::is_regular_file(status),
                   dealii::ExcMessage(
                     what

@@ -1,5 +1,6 @@
 // The simulator's parameters, construction, and time loop: the steps of the
 // paper's scheme (14) in order.
+#include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
@@ -98,10 +99,18 @@ namespace VPContact
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
     mesh_refinement.parse_parameters(prm);
+    geometry.set_finest_refinements(
+      mesh_refinement.finest_refinements(geometry.global_refinements()));
     reference_solution.parse_parameters(prm, output_writer.directory());
     reference_solution.check_time_step(time_discretization.step_size(),
                                        time_discretization.end_time());
     checkpointing.parse_parameters(prm);
+    // The mesh file may change under the same name between a run and its
+    // resumption.
+    if (const std::string checksum = geometry.mesh_file_checksum();
+        !checksum.empty())
+      checkpointing.record_problem_input("Geometry/Mesh file (CRC-32)",
+                                         checksum);
     // A checkpoint holds one run's state; the state of a sequence of cycles
     // (the table so far, the indicators of the current cycle) is not in it.
     AssertThrow(
@@ -424,7 +433,7 @@ namespace VPContact
           }
       }
 
-    AssertThrow(std::isfinite(increment_owned.l2_norm()),
+    AssertThrow(all_finite(increment_owned, mpi_communicator),
                 ExcMessage("The displacement increment at t = " + to_text(time)
                            + " is not finite. The output up to the previous "
                              "step is complete in "

@@ -3,6 +3,8 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 
+#include <deal.II/grid/grid_tools.h>
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -26,6 +28,17 @@ namespace VPContact
     const double h = equivalent_mesh_size(triangulation);
     if (cycle == 0)
       first_mesh_size = h;
+    {
+      const auto box   = GridTools::compute_bounding_box(triangulation);
+      Point<dim> lower = box.get_boundary_points().first,
+                 upper = box.get_boundary_points().second;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = Utilities::MPI::min(lower[d], mpi_communicator);
+          upper[d] = Utilities::MPI::max(upper[d], mpi_communicator);
+        }
+      body_size = lower.distance(upper);
+    }
     time_discretization.set_halvings(
       mesh_refinement.time_step_halvings(first_mesh_size, h));
 

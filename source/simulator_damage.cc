@@ -1,5 +1,6 @@
 // The simulator's damage field: its degrees of freedom, the obstacle problem
 // of step 4 of the scheme with its bounds, and the damage statistics.
+#include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 
@@ -264,7 +265,7 @@ namespace VPContact
     damage_system.distribute_hanging_nodes(damage_owned);
     // A NaN compares false with everything and would pass the range check
     // below unseen.
-    const bool finite = std::isfinite(damage_owned.l2_norm());
+    const bool finite = all_finite(damage_owned, mpi_communicator);
     VPContactCheckParameter(finite,
                             "Damage/Initial damage",
                             "'" + damage_model.initial_damage_text() + "'",
@@ -432,7 +433,7 @@ namespace VPContact
     assemble_damage(false);
     // A source that evaluates to NaN or infinity anywhere spoils the whole
     // load; say so here rather than let CG fail on it.
-    AssertThrow(std::isfinite(damage_load.l2_norm()),
+    AssertThrow(all_finite(damage_load, mpi_communicator),
                 ExcMessage(parameter_message(
                   "Damage/Source",
                   "'" + damage_model.source_text() + "'",

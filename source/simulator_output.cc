@@ -95,6 +95,23 @@ namespace VPContact
       quantity = "the stress (its energy)";
     else if (!measures.zeta_finite)
       quantity = "the damage zeta";
+    // A displacement far beyond the body's size is no longer small strain:
+    // an unstable or unbounded step, stopped as the stress is (see
+    // update_stress()).
+    const double u_limit = viscoplasticity.divergence_limit() * body_size;
+    AssertThrow(!quantity.empty() || measures.u_max <= u_limit,
+                ExcMessage("Step " + std::to_string(n)
+                           + " (t = " + to_text(time_discretization.time(n))
+                           + "): the displacement reached "
+                           + to_text(measures.u_max)
+                           + " m, more than Viscoplasticity/Divergence limit "
+                             "x the body's size = "
+                           + to_text(u_limit)
+                           + " m. The viscoplastic step is unstable or the "
+                             "body is not held; check the law's data and "
+                             "Time/Time step. The output up to the step "
+                             "before is complete in "
+                           + output_writer.directory() + "."));
     AssertThrow(
       quantity.empty(),
       ExcMessage(
@@ -184,6 +201,14 @@ namespace VPContact
       {
         const auto errors
           = verification.compute_errors(dof_handler, solution, time, u_max);
+        // The exact solution is evaluated at every quadrature point: one
+        // NaN there makes the L2 error NaN (a maximum would pass it by).
+        AssertThrow(std::isfinite(errors.l2) && std::isfinite(errors.max_nodal),
+                    ExcMessage("Verification/Exact displacement is not finite "
+                               "(NaN or infinity) somewhere at t = "
+                               + to_text(time)
+                               + ". Check it for divisions by zero, roots "
+                                 "or logarithms of negative numbers."));
         statistics.add_value("u_error_max_nodal", errors.max_nodal);
         statistics.add_value("u_error_L2", errors.l2);
         // Errors are round-off in verification scenes: printed with two
@@ -202,6 +227,10 @@ namespace VPContact
         verification.record_stress_error(error,
                                          Utilities::MPI::max(stress_scale,
                                                              mpi_communicator));
+        AssertThrow(std::isfinite(error),
+                    ExcMessage("Verification/Exact stress is not finite (NaN "
+                               "or infinity) somewhere at t = "
+                               + to_text(time) + "."));
         statistics.add_value("stress_error_max", error);
         line += "  stress error = " + format("%.2e", error);
       }
@@ -212,6 +241,10 @@ namespace VPContact
                                       solution,
                                       damage_system.full_dofs(),
                                       time);
+        AssertThrow(std::isfinite(error),
+                    ExcMessage("Verification/Exact damage is not finite (NaN "
+                               "or infinity) somewhere at t = "
+                               + to_text(time) + "."));
         statistics.add_value("damage_error_max", error);
         line += "  damage error = " + format("%.2e", error);
       }

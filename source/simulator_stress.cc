@@ -358,11 +358,18 @@ namespace VPContact
           fe_values.reinit(cell);
           const auto history = stress_history.get_data(cell);
           for (const unsigned int q : fe_values.quadrature_point_indices())
-            error = std::max(
-              error,
-              (history[q].stress
-               - verification.exact_stress(fe_values.quadrature_point(q), time))
-                .norm());
+            {
+              const double e
+                = (history[q].stress
+                   - verification.exact_stress(fe_values.quadrature_point(q),
+                                               time))
+                    .norm();
+              // std::max() would pass a NaN by: it counts as infinite.
+              error = std::max(error,
+                               std::isfinite(e) ?
+                                 e :
+                                 std::numeric_limits<double>::infinity());
+            }
         }
     return Utilities::MPI::max(error, mpi_communicator);
   }

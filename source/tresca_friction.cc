@@ -51,7 +51,7 @@ namespace VPContact
                         "c = factor x (stiffness diagonal of the node) / "
                         "(its boundary length), of the order of E/h. Any "
                         "positive value gives the same solution; it can "
-                        "change the number of iterations.");
+                        "change the number of iterations. Must be positive.");
     }
     prm.leave_subsection();
   }
@@ -65,7 +65,13 @@ namespace VPContact
     prm.enter_subsection("Contact");
     friction_bound
       = parse_function_entry<dim>(prm, "Contact", "Friction bound", 1);
+    iteration_cap = prm.get_integer("Maximum active set iterations");
+    c_factor      = prm.get_double("Complementarity factor");
     prm.leave_subsection();
+    VPContactCheckParameter(c_factor > 0,
+                            "Contact/Complementarity factor",
+                            c_factor,
+                            "the factor must be positive, e.g. 1.");
   }
 
 
@@ -94,9 +100,14 @@ namespace VPContact
                   {
                     const double g = friction_bound->value(face->vertex(v));
                     g_max          = std::max(g_max, g);
-                    if (!(g >= g_min)) // also true for NaN
+                    // A value that is not finite counts as -infinity.
+                    if (std::isfinite(g) ?
+                          g < g_min :
+                          g_min > -std::numeric_limits<double>::infinity())
                       {
-                        g_min = (std::isnan(g) ? -1. : g);
+                        g_min = (std::isfinite(g) ?
+                                   g :
+                                   -std::numeric_limits<double>::infinity());
                         where = face->vertex(v);
                         when  = t;
                       }
@@ -118,11 +129,12 @@ namespace VPContact
                                   holder);
     VPContactCheckParameter(global_min >= 0,
                             "Contact/Friction bound",
-                            global_min,
+                            (std::isfinite(global_min) ?
+                               to_text(global_min) :
+                               std::string("(not finite)"))
+                              + " at x = " + text,
                             "the friction bound must be non-negative and "
-                            "finite on the contact boundary; this is its "
-                            "value at x = "
-                              + text + ".");
+                            "finite on the contact boundary.");
     return Utilities::MPI::max(g_max, triangulation.get_communicator());
   }
 

@@ -101,6 +101,14 @@ namespace VPContact
     void
     parse_parameters(ParameterHandler &prm);
 
+    /**
+     * Record @p value under @p entry with the parameters that define the
+     * problem, for an input that is not a parameter itself (the contents of
+     * the mesh file): a resumed run with another value is refused.
+     */
+    void
+    record_problem_input(const std::string &entry, const std::string &value);
+
     /// Whether this run continues from a checkpoint.
     bool
     resume() const;

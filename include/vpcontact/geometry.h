@@ -52,6 +52,23 @@ namespace VPContact
     create_coarse_mesh(
       parallel::distributed::Triangulation<dim> &triangulation) const;
 
+    /// The CRC-32 of the mesh file in hex, or "" for a box (or a file
+    /// that cannot be read; create_mesh() says so).
+    std::string
+    mesh_file_checksum() const;
+
+    /// Geometry/Global refinements.
+    unsigned int
+    global_refinements() const;
+
+    /**
+     * The number of refinements of the finest mesh of the run (later
+     * refinement cycles included), for the memory check of
+     * create_coarse_mesh(); Global refinements unless set.
+     */
+    void
+    set_finest_refinements(const unsigned int n);
+
     /**
      * The set of boundary ids that the mesh has, on all ranks together.
      */
@@ -78,6 +95,7 @@ namespace VPContact
     /// The entry as the user wrote it, for messages.
     std::string  mesh_file_as_given;
     unsigned int n_global_refinements = 0;
+    unsigned int n_finest_refinements = 0;
   };
 } // namespace VPContact
 

@@ -91,6 +91,16 @@ namespace VPContact
 
     unsigned int
     n_cycles() const;
+
+    /**
+     * The refinements of the finest mesh of the run, for a coarse mesh
+     * refined @p global_refinements times: one more per uniform cycle.
+     * Throws a message naming the entries if the cycles would go beyond
+     * Maximum level, or if adaptive cycles start at it (they would repeat
+     * the same run).
+     */
+    unsigned int
+    finest_refinements(const unsigned int global_refinements) const;
     /// Whether the run needs error indicators (adaptive, more than one
     /// cycle).
     bool

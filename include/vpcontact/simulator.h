@@ -356,6 +356,9 @@ namespace VPContact
     ConvergenceTable       convergence_table;
     /// The equivalent mesh size of the first cycle (for k proportional to h).
     double first_mesh_size = 0;
+    /// The diagonal of the body's bounding box, the scale of the
+    /// displacement safeguard in check_finite().
+    double body_size = 0;
     /// The errors against the reference in the current cycle.
     ErrorNorms   max_error, final_error;
     double       max_error_sum  = 0;
