@@ -7,6 +7,7 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -143,6 +144,22 @@ namespace VPContact
     // into this one.
     damage_bounds      = DamageBounds();
     damage_rings_ahead = 0;
+    // The matrix is M/k + kappa A: when the diffusion length sqrt(kappa k)
+    // exceeds the cells a million times, M/k is round-off against kappa A,
+    // a Laplacian with a null space, and the damage is undetermined.
+    const double h = GridTools::minimal_cell_diameter(triangulation);
+    const double diffusion_length
+      = std::sqrt(damage_model.diffusion() * time_discretization.step_size());
+    VPContactCheckParameter(diffusion_length <= 1e6 * h,
+                            "Damage/Diffusion",
+                            damage_model.diffusion(),
+                            "the diffusion length sqrt(kappa k) = "
+                              + to_text(diffusion_length)
+                              + " is more than 1e6 times the smallest cell ("
+                              + to_text(h)
+                              + "): the damage equation is numerically "
+                                "singular. Check the units of the geometry, "
+                                "Damage/Diffusion and Time/Time step.");
     damage_system.reinit(dof_handler,
                          dim,
                          locally_owned_dofs,
