@@ -3,6 +3,8 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/parsed_function.h>
 
+#include <cmath>
+
 namespace VPContact
 {
   template <int dim>
@@ -129,19 +131,54 @@ namespace VPContact
 
 
   template <int dim>
-  const std::string &
-  DamageModel<dim>::source_text() const
+  void
+  DamageModel<dim>::check_diffusion_length(const double h, const double k) const
   {
-    return source_expression;
+    const double length = std::sqrt(kappa * k);
+    VPContactCheckParameter(length <= 1e6 * h,
+                            "Damage/Diffusion",
+                            kappa,
+                            "the diffusion length sqrt(kappa k) = "
+                              + to_text(length)
+                              + " is more than 1e6 times the smallest cell ("
+                              + to_text(h)
+                              + "): the damage equation is numerically "
+                                "singular. Check the units of the geometry, "
+                                "Damage/Diffusion and Time/Time step.");
   }
 
 
 
   template <int dim>
-  const std::string &
-  DamageModel<dim>::initial_damage_text() const
+  void
+  DamageModel<dim>::check_initial_damage_finite(const bool finite) const
   {
-    return initial_expression;
+    VPContactCheckParameter(finite,
+                            "Damage/Initial damage",
+                            "'" + initial_expression + "'",
+                            "the expression is not finite (NaN or infinity) "
+                            "at some node. Check it for divisions by zero, "
+                            "roots or logarithms of negative numbers.");
+  }
+
+
+
+  template <int dim>
+  void
+  DamageModel<dim>::check_source_finite(const bool         finite,
+                                        const unsigned int n,
+                                        const double       t) const
+  {
+    VPContactCheckParameter(finite,
+                            "Damage/Source",
+                            "'" + source_expression + "'",
+                            "at step " + std::to_string(n)
+                              + " (t = " + to_text(t)
+                              + ") the source is not finite (NaN or infinity) "
+                                "at some quadrature point, evaluated in the "
+                                "state of the step before. Check it for "
+                                "divisions by zero, roots or logarithms of "
+                                "negative numbers, and overflow.");
   }
 
 

@@ -144,22 +144,9 @@ namespace VPContact
     // into this one.
     damage_bounds      = DamageBounds();
     damage_rings_ahead = 0;
-    // The matrix is M/k + kappa A: when the diffusion length sqrt(kappa k)
-    // exceeds the cells a million times, M/k is round-off against kappa A,
-    // a Laplacian with a null space, and the damage is undetermined.
-    const double h = GridTools::minimal_cell_diameter(triangulation);
-    const double diffusion_length
-      = std::sqrt(damage_model.diffusion() * time_discretization.step_size());
-    VPContactCheckParameter(diffusion_length <= 1e6 * h,
-                            "Damage/Diffusion",
-                            damage_model.diffusion(),
-                            "the diffusion length sqrt(kappa k) = "
-                              + to_text(diffusion_length)
-                              + " is more than 1e6 times the smallest cell ("
-                              + to_text(h)
-                              + "): the damage equation is numerically "
-                                "singular. Check the units of the geometry, "
-                                "Damage/Diffusion and Time/Time step.");
+    damage_model.check_diffusion_length(GridTools::minimal_cell_diameter(
+                                          triangulation),
+                                        time_discretization.step_size());
     damage_system.reinit(dof_handler,
                          dim,
                          locally_owned_dofs,
@@ -282,13 +269,8 @@ namespace VPContact
     damage_system.distribute_hanging_nodes(damage_owned);
     // A NaN compares false with everything and would pass the range check
     // below unseen.
-    const bool finite = all_finite(damage_owned, mpi_communicator);
-    VPContactCheckParameter(finite,
-                            "Damage/Initial damage",
-                            "'" + damage_model.initial_damage_text() + "'",
-                            "the expression is not finite (NaN or infinity) "
-                            "at some node. Check it for divisions by zero, "
-                            "roots or logarithms of negative numbers.");
+    damage_model.check_initial_damage_finite(
+      all_finite(damage_owned, mpi_communicator));
     const auto [lowest, highest] = damage_range(damage_owned);
     VPContactCheckParameter(lowest >= 0 && highest <= 1,
                             "Damage/Initial damage",
@@ -450,16 +432,9 @@ namespace VPContact
     assemble_damage(false);
     // A source that evaluates to NaN or infinity anywhere spoils the whole
     // load; say so here rather than let CG fail on it.
-    AssertThrow(all_finite(damage_load, mpi_communicator),
-                ExcMessage(parameter_message(
-                  "Damage/Source",
-                  "'" + damage_model.source_text() + "'",
-                  "at step " + std::to_string(n)
-                    + " (t = " + to_text(time_discretization.time(n))
-                    + ") the source is not finite (NaN or infinity) at some "
-                      "quadrature point, evaluated in the state of the step "
-                      "before. Check it for divisions by zero, roots or "
-                      "logarithms of negative numbers, and overflow.")));
+    damage_model.check_source_finite(all_finite(damage_load, mpi_communicator),
+                                     n,
+                                     time_discretization.time(n));
     TrilinosWrappers::MPI::Vector step_rhs(damage_old);
     K.vmult(step_rhs, damage_old);
     step_rhs.sadd(-1., 1., damage_load);

@@ -55,13 +55,25 @@ namespace VPContact
     unsigned int
     max_iterations() const;
 
-    /// The expression of phi as the user wrote it, for messages.
-    const std::string &
-    source_text() const;
+    /**
+     * Throw a message naming Damage/Diffusion if the diffusion length
+     * sqrt(kappa k) exceeds the smallest cell @p h a million times: the
+     * matrix M/k + kappa A is then a Laplacian to round-off, and the damage
+     * is undetermined.
+     */
+    void
+    check_diffusion_length(const double h, const double k) const;
 
-    /// The expression of zeta_0 as the user wrote it, for messages.
-    const std::string &
-    initial_damage_text() const;
+    /// Throw a message naming Damage/Initial damage unless @p finite.
+    void
+    check_initial_damage_finite(const bool finite) const;
+
+    /// Throw a message naming Damage/Source, evaluated for step @p n at
+    /// time @p t, unless @p finite.
+    void
+    check_source_finite(const bool         finite,
+                        const unsigned int n,
+                        const double       t) const;
 
     std::string
     description() const;
