@@ -368,9 +368,9 @@ namespace VPContact
     // The cells whose nodes are all owned and not hanging (all of them on
     // one rank without hanging nodes) add their load to the owned vector
     // by position, in the order of the cells, as distribute_local_to_global
-    // did, without its index lookups (512^2 cells, 100 steps: damage
-    // assembly 2.0 s -> 1.5 s); the others go through the constraints and
-    // the ghosted assembly vector, whose owned part is then added.
+    // would, without its index lookups; the others go through the
+    // constraints and the ghosted assembly vector, whose owned part is then
+    // added.
     damage_load          = 0.;
     damage_load_assembly = 0.;
     double *const load   = damage_load.begin();
@@ -517,11 +517,8 @@ namespace VPContact
     // exact solve. "Nearly": when a solve changed at most a few nodes, the
     // next one is exact at once. Its correction is local, so the inexact
     // solve that would only confirm the sets before the exact one costs a
-    // solve's fixed work for little. Paper scene, 100 steps, Cholesky,
-    // single runs: at 256^2 cells 442 -> 363 damage solves with 2502 ->
-    // 2506 CG iterations, damage solves 1.72 -> 1.62 s; at 512^2 530 ->
-    // 449 solves, 11.4 -> 10.4 s; with 30 nodes instead of 10 the same
-    // within the spread; the printed results the same. Inexact multipliers can
+    // solve's fixed work for little (fewer damage solves, the same printed
+    // results; see git log). Inexact multipliers can
     // make two nodes trade places for ever (seen at 512^2 cells when zeta first
     // reaches 0), so after six iterations every solve is exact, and after
     // twenty the caller starts again from the previous step's sets.
