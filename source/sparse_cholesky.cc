@@ -201,10 +201,8 @@ namespace VPContact
   {
     cholmod_l_start(&common);
     // CHOLMOD's default ordering strategy: AMD, and METIS or nested
-    // dissection only when AMD fills too much. Measured on the paper scene
-    // at 512^2 cells (789507 unknowns) with OpenBLAS: 4.9 s for the
-    // analysis and the factorization, against 8.9 s with METIS alone and
-    // 7.0 s with CHOLMOD's nested dissection.
+    // dissection only when AMD fills too much; on the paper scene it is
+    // faster than METIS alone or nested dissection (scripts/bench).
     common.print = 0;
     // Supernodes also on small matrices, where CHOLMOD would otherwise
     // choose a simplicial L D L^T: the substitutions below are written for
@@ -215,10 +213,8 @@ namespace VPContact
     // No explicit zeros in the supernodes beyond those of the smallest
     // ones (nrelax): CHOLMOD's default pads the supernodes with zeros so
     // that they are larger for the BLAS, which makes the factorization a
-    // little faster and every solve read the padding. Measured at 512^2
-    // cells (789507 unknowns): 64.3M stored entries of L and 133.7 ms per
-    // solve with the default, 58.8M and 117.4 ms without the padding; the
-    // factorization (once per run) 4.47 s against 4.71 s.
+    // little faster and every solve read the padding: L is smaller and the
+    // many solves faster without it, the one factorization a little slower.
     for (double &z : common.zrelax)
       z = 0.;
   }
