@@ -4,12 +4,13 @@
 #include <vpcontact/parameter_file.h>
 #include <vpcontact/parameter_listing.h>
 #include <vpcontact/simulator.h>
-#include <vpcontact/sparse_cholesky.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <dlfcn.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -21,6 +22,24 @@ namespace VPContact
 {
   namespace
   {
+    // openblas_set_num_threads() is OpenBLAS's own, not part of the BLAS
+    // interface, so it is looked up at run time (with another BLAS this does
+    // nothing). Debian's OpenBLAS comes as libblas.so.3 and libopenblas.so.0,
+    // each with its own thread count, and the libraries may call either.
+    void
+    set_blas_threads(const unsigned int n_threads)
+    {
+      using Setter = void (*)(int);
+      for (const char *library : {"libblas.so.3", "libopenblas.so.0"})
+        if (void *handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD))
+          {
+            if (const auto setter = reinterpret_cast<Setter>(
+                  dlsym(handle, "openblas_set_num_threads")))
+              setter(static_cast<int>(n_threads));
+            dlclose(handle);
+          }
+    }
+
     void
     print_usage(std::ostream &out)
     {
@@ -118,11 +137,12 @@ namespace VPContact
   int
   run_application(int argc, char **argv)
   {
-    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-    // One BLAS thread (a threaded OpenBLAS would start one per core in
-    // every rank); only the Cholesky factorization raises it, see
-    // SparseCholesky::factorize().
-    set_blas_threads(1);
+    // deal.II's threads: the cores of the node divided among its ranks
+    // (DEAL_II_NUM_THREADS may lower it). The BLAS of the factorizations
+    // gets as many, where it can start threads, instead of one per core in
+    // every rank.
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+    set_blas_threads(MultithreadInfo::n_threads());
     const MPI_Comm communicator = MPI_COMM_WORLD;
     const bool rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
     // --resume may stand before or after the scene; the rest of the command

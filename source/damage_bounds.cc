@@ -38,8 +38,7 @@ namespace VPContact
     // Where each node sits in the local storage of a ghosted vector laid
     // out like @p lumped_mass, and of an owned one: update() and
     // held_changes() run after every damage solve over all nodes, and a
-    // Trilinos vector read by global index costs a hash lookup per entry
-    // (measured at 512^2 cells: 18 ms per solve outside CG before).
+    // Trilinos vector read by global index costs a hash lookup per entry.
     communicator = mpi_communicator;
     dofs.clear();
     mass.clear();
@@ -170,9 +169,8 @@ namespace VPContact
   {
     // On one rank every neighbour is a node of this rank, and the front is
     // found from the rows of the upper nodes alone: once the damage has
-    // spread, a fraction of the rows the product would visit (at 512^2
-    // cells, late in the paper scene, the front and the rings ahead took
-    // 19 ms per step by the product). On an M-matrix the same nodes as
+    // spread, a fraction of the rows the product would visit. On an
+    // M-matrix the same nodes as
     // front_by_product(); elsewhere every neighbour counts.
     if (neighbour_start.size() != dofs.size() + 1)
       {

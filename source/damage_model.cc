@@ -70,11 +70,14 @@ namespace VPContact
                                  "Damage",
                                  "Function constants",
                                  DamageSource<dim>::variables());
-    for (auto &copy : damage_source)
-      copy = std::make_unique<DamageSource<dim>>(source_expression,
-                                                 constants,
-                                                 "Damage/Source");
-    initial = parse_function_entry<dim>(prm,
+    // Parsed here, so that a wrong expression stops the run at once; the
+    // threads' copies are made where they first evaluate it.
+    source_constants = constants;
+    damage_source.clear();
+    damage_source.get() = std::make_shared<DamageSource<dim>>(source_expression,
+                                                              constants,
+                                                              "Damage/Source");
+    initial             = parse_function_entry<dim>(prm,
                                         "Damage",
                                         "Initial damage",
                                         1,
@@ -104,10 +107,14 @@ namespace VPContact
 
   template <int dim>
   const DamageSource<dim> &
-  DamageModel<dim>::source(const unsigned int copy) const
+  DamageModel<dim>::source() const
   {
-    AssertIndexRange(copy, damage_source.size());
-    return *damage_source[copy];
+    std::shared_ptr<DamageSource<dim>> &copy = damage_source.get();
+    if (!copy)
+      copy = std::make_shared<DamageSource<dim>>(source_expression,
+                                                 source_constants,
+                                                 "Damage/Source");
+    return *copy;
   }
 
 

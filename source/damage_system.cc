@@ -1,7 +1,6 @@
 // The damage problem's linear algebra on the damage degrees of freedom alone.
 #include <vpcontact/damage_system.h>
 #include <vpcontact/input_error.h>
-#include <vpcontact/owned_constraints.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -23,27 +22,16 @@ namespace VPContact
     {
       prm.declare_entry(
         "Damage preconditioner",
-        "modified diagonal incomplete Cholesky",
-        Patterns::Selection(
-          "modified diagonal incomplete Cholesky|modified incomplete "
-          "Cholesky|incomplete Cholesky|AMG"),
+        "incomplete Cholesky",
+        Patterns::Selection("incomplete Cholesky|AMG"),
         "Preconditioner of the CG solves of the damage problem, M_L/k + "
-        "kappa A restricted to the nodes off the bounds. The first three "
-        "work on a region around the free nodes (on each rank's rows), with "
-        "CG running over the free nodes only, so that a solve costs in "
-        "proportion to the damaged part of the body. 'modified diagonal "
-        "incomplete Cholesky': P = (D + L) D^{-1} (D + L^T) with L the "
-        "strictly lower part of the matrix and D such that P keeps its row "
-        "sums, applied with Eisenstat's trick: an iteration is two "
-        "triangular sweeps over the matrix's own entries, without a "
-        "separate matrix-vector product (paper scene, damage solves at "
-        "256^2 and 512^2 cells: 15 % and 26 % less time than MIC(0)). "
-        "'modified incomplete Cholesky': MIC(0), which keeps the row sums "
-        "too (CG iterations per solve 6.0 and 8.4 at 256^2 and 512^2 "
-        "cells, against 7.8 and 13.7 for IC(0)). 'incomplete Cholesky': "
-        "IC(0). 'AMG': Trilinos ML on the whole matrix, masked, each "
-        "iteration costing several of the others; for meshes far finer "
-        "than 512^2 cells, or where kappa k / h^2 is large.");
+        "kappa A on the nodes off the bounds, from the package of Solver/"
+        "Linear algebra. 'incomplete Cholesky': IC(0) of each rank's rows "
+        "(Ifpack, or PETSc block Jacobi with ICC), cheap to build and to "
+        "apply; the mass term keeps the iterations few while kappa k / h^2 "
+        "is small. 'AMG': algebraic multigrid (ML, GAMG), whose iterations "
+        "do not grow with the mesh, for meshes far finer than 512^2 cells "
+        "or where kappa k / h^2 is large.");
     }
     prm.leave_subsection();
   }
@@ -55,14 +43,11 @@ namespace VPContact
   DamageSystem<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    const std::string kind = prm.get("Damage preconditioner");
-    preconditioner_kind
-      = (kind == "AMG" ? Preconditioner::amg :
-         kind == "incomplete Cholesky" ?
-                         Preconditioner::incomplete_cholesky :
-         kind == "modified incomplete Cholesky" ?
-                         Preconditioner::modified_incomplete_cholesky :
-                         Preconditioner::modified_diagonal_incomplete_cholesky);
+    method  = (prm.get("Damage preconditioner") == "AMG" ?
+                 SpdMethod::cg_amg :
+                 SpdMethod::cg_incomplete_cholesky);
+    package = (prm.get("Linear algebra") == "PETSc" ? LinearAlgebra::petsc :
+                                                      LinearAlgebra::trilinos);
     prm.leave_subsection();
   }
 
@@ -76,7 +61,7 @@ namespace VPContact
                             const IndexSet        &locally_relevant_dofs,
                             const MPI_Comm         communicator)
   {
-    preconditioner.reset(); // it refers to the matrix of the last mesh
+    solver.reset(); // it refers to the matrix of the last mesh
     const auto &fe = dof_handler.get_fe();
     damage_shape_functions.clear();
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
@@ -290,7 +275,7 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector &owned_vector) const
   {
     if (has_hanging_nodes)
-      distribute_constraints(constraints, owned_vector);
+      constraints.distribute(owned_vector);
   }
 
 
@@ -355,58 +340,8 @@ namespace VPContact
   void
   DamageSystem<dim>::initialize_preconditioner()
   {
-    support_product.initialize(system_matrix,
-                               compact_owned,
-                               system_matrix.get_mpi_communicator());
-    if (preconditioner_kind == Preconditioner::amg)
-      {
-        // A scalar elliptic problem: ML's defaults with one constant mode.
-        TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        data.elliptic = true;
-        auto amg      = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        amg->initialize(system_matrix, data);
-        preconditioner = std::move(amg);
-      }
-    else
-      // (M)IC(0) or the diagonal variant, of the rows near the free nodes,
-      // built by the solves.
-      region_solver.initialize(
-        system_matrix,
-        compact_owned,
-        system_matrix.get_mpi_communicator(),
-        preconditioner_kind == Preconditioner::incomplete_cholesky ?
-          DamageRegionSolver::Preconditioner::incomplete_cholesky :
-        preconditioner_kind == Preconditioner::modified_incomplete_cholesky ?
-          DamageRegionSolver::Preconditioner::modified_incomplete_cholesky :
-          DamageRegionSolver::Preconditioner::diagonal);
-  }
-
-
-
-  template <int dim>
-  void
-  DamageSystem<dim>::vmult_on_support(TrilinosWrappers::MPI::Vector       &y,
-                                      const TrilinosWrappers::MPI::Vector &x)
-  {
-    support_product.vmult(y, x);
-  }
-
-
-
-  template <int dim>
-  void
-  DamageSystem<dim>::begin_step()
-  {
-    region_solver.begin_step();
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  DamageSystem<dim>::n_region_builds() const
-  {
-    return region_solver.n_region_builds();
+    solver = create_spd_solver(package, method, "Solver/Damage preconditioner");
+    solver->initialize(system_matrix, NearNullSpace());
   }
 
 
@@ -419,11 +354,9 @@ namespace VPContact
                            const double                         tolerance,
                            const unsigned int                   max_iterations)
   {
-    // The region solver measures |b| on the free nodes itself (b vanishes
-    // on the held ones), and returns x = 0 for b = 0.
-    const bool   region = (preconditioner_kind != Preconditioner::amg);
-    const double b_norm = (region ? 0. : b.l2_norm());
-    if (!region && b_norm == 0.)
+    Assert(solver, ExcMessage("initialize_preconditioner() first."));
+    const double b_norm = b.l2_norm();
+    if (b_norm == 0.)
       {
         x = 0.;
         return 0;
@@ -431,74 +364,22 @@ namespace VPContact
     SolverControl control(max_iterations, tolerance * b_norm);
     try
       {
-        if (region)
-          return region_solver.solve(b, x, held, tolerance, max_iterations);
-        solve_masked(b, x, held, control);
+        return solver->solve(x, b, control, held);
       }
     catch (const SolverControl::NoConvergence &e)
       {
         // Every rank gets here in the same iteration (the residual is
-        // global), so the norm, a collective call, is safe here.
+        // global).
         AssertThrow(false,
                     ExcMessage("CG did not converge for the damage: after "
                                + std::to_string(e.last_step)
                                + " iterations the residual is "
                                + to_text(e.last_residual) + " > "
-                               + to_text(tolerance * b.l2_norm())
+                               + to_text(control.tolerance())
                                + ". Raise Solver/Maximum linear iterations or "
                                  "loosen Solver/Relative tolerance."));
       }
-    return control.last_step();
-  }
-
-
-
-  template <int dim>
-  void
-  DamageSystem<dim>::solve_masked(const TrilinosWrappers::MPI::Vector &b,
-                                  TrilinosWrappers::MPI::Vector       &x,
-                                  const std::vector<unsigned int>     &held,
-                                  SolverControl &control) const
-  {
-    Assert(preconditioner, ExcMessage("initialize_preconditioner() first."));
-    // x -> P A P x + (I - P) x for A = K or the preconditioner C of K, on
-    // the local entries. Every vector CG applies these to is zero on the
-    // held nodes: b and the start vector are, and then so are the
-    // residual, the search direction and the iterate, exactly, since
-    // their held entries only ever get sums of zeros. So P x = x, the
-    // operator is A x with the held entries of the result set to 0, and
-    // no masked copy of x is needed (measured at 256^2 cells: the copies
-    // took 18 % of the damage CG time).
-    struct Masked
-    {
-      std::function<void(TrilinosWrappers::MPI::Vector &,
-                         const TrilinosWrappers::MPI::Vector &)>
-                                       apply;
-      const std::vector<unsigned int> &held;
-      void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
-      {
-#ifdef DEBUG
-        for (const auto i : held)
-          Assert(src.begin()[i] == 0., ExcInternalError());
-#endif
-        apply(dst, src);
-        double *d = dst.begin();
-        for (const auto i : held)
-          d[i] = 0.;
-      }
-    };
-    const Masked operator_on_free{[this](auto &dst, const auto &src) {
-                                    system_matrix.vmult(dst, src);
-                                  },
-                                  held};
-    const Masked preconditioner_on_free{[this](auto &dst, const auto &src) {
-                                          preconditioner->vmult(dst, src);
-                                        },
-                                        held};
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    cg.solve(operator_on_free, x, b, preconditioner_on_free);
+    return 0;
   }
 
 

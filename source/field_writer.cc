@@ -1,5 +1,5 @@
 // FieldWriter: the .vtu piece of a field output, compressed and written in a
-// second thread or at once.
+// task of deal.II's threads or at once.
 #include <vpcontact/field_writer.h>
 #include <vpcontact/output_writer.h>
 
@@ -16,8 +16,8 @@ namespace VPContact
   {
     // A run that stops with an error leaves its last piece whole: wait
     // for it. What went wrong with it no longer matters then.
-    if (write.valid())
-      write.wait();
+    if (write.joinable())
+      write.join();
   }
 
 
@@ -32,22 +32,35 @@ namespace VPContact
     Assert(!pending(), ExcMessage("wait() for the previous write first"));
     // The task owns the patches; the file is written only once the whole
     // piece is in memory.
-    auto task = [fields = std::move(fields), filename, flags]() {
-      std::ostringstream vtu;
-      DataOutBase::write_vtu(fields.patches,
-                             fields.names,
-                             fields.vector_ranges,
-                             flags,
-                             vtu);
-      write_file_atomically(filename, vtu.str());
+    // It returns what went wrong, or an empty string.
+    auto task = [fields = std::move(fields), filename, flags]() -> std::string {
+      try
+        {
+          std::ostringstream vtu;
+          DataOutBase::write_vtu(fields.patches,
+                                 fields.names,
+                                 fields.vector_ranges,
+                                 flags,
+                                 vtu);
+          write_file_atomically(filename, vtu.str());
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          return Utilities::trim(info.str());
+        }
+      catch (const std::exception &e)
+        {
+          return e.what();
+        }
+      return "";
     };
-    // A deferred task runs in wait(), in this thread: the same path, and
-    // the same way of reporting a failure, as in the background.
-    write
-      = std::async(in_background ? std::launch::async : std::launch::deferred,
-                   std::move(task));
-    if (!in_background)
-      write.wait();
+    started = true;
+    if (in_background)
+      write = Threads::new_task(std::move(task));
+    else
+      failure = task();
   }
 
 
@@ -56,7 +69,7 @@ namespace VPContact
   bool
   FieldWriter<dim>::pending() const
   {
-    return write.valid();
+    return started;
   }
 
 
@@ -65,23 +78,16 @@ namespace VPContact
   std::string
   FieldWriter<dim>::wait()
   {
-    if (!write.valid())
+    if (!started)
       return "";
-    try
+    started = false;
+    if (write.joinable())
       {
-        write.get();
+        write.join();
+        failure = write.return_value();
+        write   = Threads::Task<std::string>();
       }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream info;
-        e.print_info(info);
-        return Utilities::trim(info.str());
-      }
-    catch (const std::exception &e)
-      {
-        return e.what();
-      }
-    return "";
+    return failure;
   }
 
 

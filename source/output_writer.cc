@@ -135,8 +135,8 @@ namespace VPContact
                         "true",
                         Patterns::Bool(),
                         "Compress and write the .vtu files of a field output "
-                        "in a second thread while the next steps are "
-                        "computed (at 512^2 cells about 0.5 s per output). "
+                        "in a task of their own while the next steps are "
+                        "computed. "
                         "The .pvtu and .pvd records list an output once its "
                         "files are complete. false writes them before the "
                         "next step starts.");

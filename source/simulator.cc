@@ -2,7 +2,6 @@
 // paper's scheme (14) in order.
 #include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
-#include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/timer.h>
@@ -93,7 +92,6 @@ namespace VPContact
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
-    linear_solver.set_cores_per_rank(cores_per_rank(mpi_communicator));
     damage_system.parse_parameters(prm);
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
@@ -124,6 +122,9 @@ namespace VPContact
                    "and Resume from checkpoint = false, or run the mesh of "
                    "one cycle as a single run."));
     check_stability_limits();
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first < dim)
+        displacement_shape_functions.push_back(i);
   }
 
 
@@ -301,23 +302,16 @@ namespace VPContact
   {
     // Steps 1-3 of the scheme (predictor, displacement, stress) and step 4
     // (damage). The damage step uses only data of step n-1: the source
-    // phi_{n-1} stored by the assembly of step 2, and zeta_{n-1}. It
-    // therefore runs beside the first linear solve of the displacement
-    // step, in the same thread or, with the Cholesky factors, while they
-    // solve in a second one (see solve_increment()). zeta_n enters the
-    // solution only after the stress update, which still reads zeta_{n-1}.
-    const bool                  damage      = damage_model.is_active();
-    const std::function<void()> damage_step = [this, n]() { solve_damage(n); };
+    // phi_{n-1} stored by the assembly of step 2, and zeta_{n-1}. zeta_n
+    // enters the solution only after the stress update, which still reads
+    // zeta_{n-1}.
+    const bool damage = damage_model.is_active();
     if (viscoplasticity.implicit())
-      {
-        solve_increment_implicit(time_discretization.time(n));
-        if (damage)
-          damage_step();
-      }
+      solve_increment_implicit(time_discretization.time(n));
     else
-      solve_increment(time_discretization.time(n),
-                      true,
-                      damage ? damage_step : std::function<void()>());
+      solve_increment(time_discretization.time(n), true);
+    if (damage)
+      solve_damage(n);
     update_stress(n);
     if (damage)
       store_damage(n);
@@ -338,7 +332,7 @@ namespace VPContact
                            + to_text(material.youngs_modulus())
                            + " overflows with the cell sizes of this mesh. "
                              "Rescale the units of the scene."));
-    linear_solver.initialize(stiffness_matrix, all_constant_modes);
+    linear_solver.initialize(stiffness_matrix, rigid_motions());
   }
 
 
@@ -346,8 +340,7 @@ namespace VPContact
   template <int dim>
   void
   Simulator<dim>::solve_increment(const double time,
-                                  const bool   with_viscoplastic_rate,
-                                  const std::function<void()> &beside)
+                                  const bool   with_viscoplastic_rate)
   {
     if (friction_active)
       friction_active_set.set_bounds(friction, time);
@@ -373,34 +366,20 @@ namespace VPContact
         if (friction_active)
           friction_active_set.add_slip_forces(constraints, rhs);
         {
-          // The work beside the solve (the damage step) runs in the first
-          // iteration. When the factors can solve in a second thread it
-          // runs while they do, and "Solve" times only what it does not
-          // hide. Then the second thread starts on the stress update (see
-          // solve_with_stress_ahead()); should the friction sets change the
-          // increment, the stress update starts over. It touches only the
-          // increment, the right-hand side and the stress at the points,
-          // none of which the damage step reads.
-          std::future<unsigned int> solving;
-          stress_ahead.restart();
-          increment_ready = false;
-          if (iteration == 1 && beside)
-            {
-              if (linear_solver.solves_in_background())
-                solving = solve_with_stress_ahead();
-              beside();
-              stress_ahead.arrive();
-            }
           TimerOutput::Scope t(computing_timer, "Solve");
+          // The displacement entries lead the local entries of the full
+          // vector (see setup_dofs()).
+          std::copy_n(increment_owned.begin(),
+                      displacement_increment.locally_owned_size(),
+                      displacement_increment.begin());
           last_linear_iterations
-            += solving.valid() ?
-                 solving.get() :
-                 linear_solver.solve(stiffness_matrix, increment_owned, rhs);
-          if (!increment_ready)
-            distribute_constraints(constraints, increment_owned);
+            += linear_solver.solve(displacement_increment, rhs);
+          std::copy(displacement_increment.begin(),
+                    displacement_increment.end(),
+                    increment_owned.begin());
+          constraints.distribute(increment_owned);
         }
-        if (!increment_ready)
-          increment_exchange.copy(increment_owned, increment);
+        increment = increment_owned;
         if (!friction_active)
           break;
 
@@ -441,7 +420,7 @@ namespace VPContact
     if (with_viscoplastic_rate)
       increment_predictor.record(increment_owned);
     solution_owned += increment_owned;
-    solution_exchange.copy(solution_owned, solution);
+    solution = solution_owned;
   }
 
 
@@ -452,16 +431,11 @@ namespace VPContact
   {
     // The floor of a time step: one solve of the displacement system with
     // everything reused (matrix and preconditioner as they are, the last
-    // right-hand side), from a zero start vector, made as the steps make
-    // their first solve: where the damage step runs beside the solve, in
-    // the second thread and in one thread, as there (alone here).
-    TrilinosWrappers::MPI::Vector x(increment_owned);
+    // right-hand side), from a zero start vector.
+    TrilinosWrappers::MPI::Vector x(displacement_increment);
     x = 0.;
     Timer              timer;
-    const unsigned int iterations
-      = (linear_solver.solves_in_background() && damage_model.is_active() ?
-           linear_solver.solve_in_background(x, rhs).get() :
-           linear_solver.solve(stiffness_matrix, x, rhs));
+    const unsigned int iterations = linear_solver.solve(x, rhs);
     timer.stop();
 
     // Its two kernels, each timed over ten applications: they tell how the
@@ -475,12 +449,12 @@ namespace VPContact
     for (unsigned int i = 0; i < 10; ++i)
       linear_solver.precondition(y, rhs);
     preconditioner_timer.stop();
-    const bool cg = linear_solver.method() == LinearSolver::Method::cg_amg;
+    const bool        cg = !linear_solver.is_direct();
     const std::string how
       = (cg ? std::to_string(iterations) + " CG iterations" :
               std::string("solve with the factors"));
     pcout << "Solve floor: one displacement solve takes " << timer.wall_time()
-          << " s (" << how << ", " << dof_handler.n_dofs()
+          << " s (" << how << ", " << stiffness_matrix.m()
           << " dofs); one matrix-vector product "
           << 100. * matvec_timer.wall_time() << " ms, "
           << (cg ? "one preconditioner application " :

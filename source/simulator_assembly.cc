@@ -3,6 +3,7 @@
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -12,21 +13,23 @@ namespace VPContact
   namespace
   {
     // The element matrix (E eps(phi_j), eps(phi_i)) of the cell that
-    // @p fe_values was last reinitialized on.
+    // @p fe_values was last reinitialized on, for its displacement shape
+    // functions @p shape.
     template <int dim>
     void
-    elastic_cell_matrix(const FEValues<dim>           &fe_values,
-                        const SymmetricTensor<4, dim> &E,
-                        FullMatrix<double>            &cell_matrix)
+    elastic_cell_matrix(const FEValues<dim>             &fe_values,
+                        const std::vector<unsigned int> &shape,
+                        const SymmetricTensor<4, dim>   &E,
+                        FullMatrix<double>              &cell_matrix)
     {
       const FEValuesExtractors::Vector     u(0);
-      const unsigned int                   n = cell_matrix.m();
+      const unsigned int                   n = shape.size();
       std::vector<SymmetricTensor<2, dim>> eps_phi(n);
-      cell_matrix = 0.;
+      cell_matrix.reinit(n, n);
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
           for (unsigned int i = 0; i < n; ++i)
-            eps_phi[i] = fe_values[u].symmetric_gradient(i, q);
+            eps_phi[i] = fe_values[u].symmetric_gradient(shape[i], q);
           for (unsigned int i = 0; i < n; ++i)
             {
               const SymmetricTensor<2, dim> E_eps_i = E * eps_phi[i];
@@ -52,24 +55,25 @@ namespace VPContact
     // k, since the unknown is the increment k w. It does not change while
     // the mesh is fixed, and neither does the structure of the constraints,
     // so it is assembled once.
-    FEValues<dim>      fe_values(fe,
+    FEValues<dim>                        fe_values(fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    FullMatrix<double>                   cell_matrix;
+    std::vector<types::global_dof_index> dof_indices;
 
     stiffness_matrix = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          elastic_cell_matrix(fe_values, material.stiffness(), cell_matrix);
-          cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 dof_indices,
-                                                 stiffness_matrix);
-        }
+    for (const auto &cell : owned_cells)
+      {
+        fe_values.reinit(cell);
+        elastic_cell_matrix(fe_values,
+                            displacement_shape_functions,
+                            material.stiffness(),
+                            cell_matrix);
+        get_displacement_dof_indices(cell, dof_indices);
+        constraints.distribute_local_to_global(cell_matrix,
+                                               dof_indices,
+                                               stiffness_matrix);
+      }
     stiffness_matrix.compress(VectorOperation::add);
   }
 
@@ -134,67 +138,38 @@ namespace VPContact
     const double k = time_discretization.step_size();
     const bool   evaluate_rate
       = with_viscoplastic_rate && !viscoplastic_law->is_zero();
-    const bool          body_force    = boundary_conditions.has_body_force();
-    const unsigned int  dofs_per_cell = fe.n_dofs_per_cell();
+    const bool          body_force = boundary_conditions.has_body_force();
     const double *const solution_entries
       = cell_kinematics.local_entries(solution);
 
-    // Most cells carry no load and no constraint: their entries go to the
-    // owned vector by position (see find_plain_rhs_cells()).
-    rhs                       = 0.;
-    double *const rhs_entries = rhs.begin();
-    const auto    add_by_position
-      = [&](const auto &cell, const Vector<double> &cell_rhs) {
-          const unsigned int *position
-            = &plain_rhs_positions[cell->active_cell_index() * dofs_per_cell];
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            if (position[i] != numbers::invalid_unsigned_int)
-              rhs_entries[position[i]] += cell_rhs(i);
-        };
-
-    // The plain cells in two halves that add to no common entry (see
-    // split_plain_rhs_cells()), in two threads where there is a second
-    // core; then, in this thread, the others. With a body force every cell
-    // needs its FEValues, and all go the second way.
-    if (!body_force)
-      run_in_halves(linear_solver.uses_second_thread(),
-                    [&](const unsigned int half) {
-                      RhsScratch scratch(quadrature.size(), dofs_per_cell);
-                      for (const auto &cell : rhs_halves[half])
-                        {
-                          compute_cell_rhs(cell,
-                                           time - k,
-                                           evaluate_rate,
-                                           solution_entries,
-                                           half,
-                                           scratch);
-                          add_by_position(cell, scratch.cell_rhs);
-                        }
-                      return 0;
-                    });
-    RhsScratch      scratch(quadrature.size(), dofs_per_cell);
-    AssemblyScratch assembly_scratch(fe, quadrature);
-    const auto      add_other_cell = [&](const auto &cell) {
-      compute_cell_rhs(cell,
-                       time - k,
-                       evaluate_rate,
-                       solution_entries,
-                       0,
-                       scratch);
-      if (!body_force && plain_rhs_cell[cell->active_cell_index()])
-        add_by_position(cell, scratch.cell_rhs);
-      else
-        add_cell_rhs(cell, body_force, assembly_scratch, scratch.cell_rhs);
-    };
-    if (body_force)
-      {
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            add_other_cell(cell);
-      }
-    else
-      for (const auto &cell : rhs_serial_cells)
-        add_other_cell(cell);
+    // The cells in the threads of WorkStream, each into its own CellRhs;
+    // their sums into rhs one at a time, in the order of the cells.
+    rhs = 0.;
+    WorkStream::run(
+      owned_cells.begin(),
+      owned_cells.end(),
+      [&](const auto &cell, AssemblyScratch &scratch, CellRhs &copy) {
+        compute_cell_rhs(*cell,
+                         time - k,
+                         evaluate_rate,
+                         solution_entries,
+                         scratch,
+                         copy);
+        add_cell_loads_and_lifts(*cell, body_force, scratch, copy);
+      },
+      [&](const CellRhs &copy) {
+        if (copy.inhomogeneous)
+          constraints.distribute_local_to_global(copy.cell_rhs,
+                                                 copy.dof_indices,
+                                                 rhs,
+                                                 copy.cell_matrix);
+        else
+          constraints.distribute_local_to_global(copy.cell_rhs,
+                                                 copy.dof_indices,
+                                                 rhs);
+      },
+      AssemblyScratch(fe, quadrature),
+      CellRhs(displacement_shape_functions.size()));
     rhs.compress(VectorOperation::add);
   }
 
@@ -207,18 +182,16 @@ namespace VPContact
     const double                                          previous_time,
     const bool                                            evaluate_rate,
     const double *const                                   solution_entries,
-    const unsigned int                                    copy,
-    RhsScratch                                           &scratch)
+    AssemblyScratch                                      &scratch,
+    CellRhs                                              &copy)
   {
     // The strains, the damage and the work of the predictor come from
     // CellKinematics; an FEValues is reinitialized only on the cells that
     // carry a load or an inhomogeneous constraint, in add_cell_rhs(): about
     // half the time of an FEValues on every cell, the same printed results.
-    // The damage source is evaluated through copy @p copy of its expression
-    // (one per thread).
     const bool   with_damage = damage_model.is_active();
     const double k           = time_discretization.step_size();
-    scratch.cell_rhs         = 0.;
+    scratch.cell_vector.reinit(fe.n_dofs_per_cell());
     if (evaluate_rate || with_damage)
       cell_kinematics.strains(cell,
                               solution_entries,
@@ -240,53 +213,50 @@ namespace VPContact
                                                       scratch.damage_values[q]);
         if (with_damage)
           point.damage_source
-            = damage_model.source(copy).value(scratch.strains[q],
-                                              point.stress,
-                                              scratch.damage_values[q],
-                                              cell_kinematics.point(cell, q),
-                                              previous_time);
+            = damage_model.source().value(scratch.strains[q],
+                                          point.stress,
+                                          scratch.damage_values[q],
+                                          cell_kinematics.point(cell, q),
+                                          previous_time);
         scratch.weighted_predictor[q] = point.predictor * JxW[q];
       }
     cell_kinematics.subtract_stress_work(cell,
                                          make_array_view(std::as_const(
                                            scratch.weighted_predictor)),
-                                         scratch.cell_rhs);
+                                         scratch.cell_vector);
+    get_displacement_dof_indices(cell, copy.dof_indices);
   }
 
 
 
   template <int dim>
   void
-  Simulator<dim>::add_cell_rhs(
+  Simulator<dim>::add_cell_loads_and_lifts(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const bool                                            body_force,
     AssemblyScratch                                      &scratch,
-    Vector<double>                                       &cell_rhs)
+    CellRhs                                              &copy)
   {
-    // A cell with a load or a constraint: the loads and inhomogeneous
-    // constraints need the FEValues of the cell, and the constraints
-    // decide where its entries go.
-    auto &dof_indices = scratch.dof_indices;
-    cell->get_dof_indices(dof_indices);
-    bool inhomogeneous = false;
-    for (const auto dof : dof_indices)
-      inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
-    if (body_force || inhomogeneous)
+    // The loads, and the matrix that lifts an inhomogeneous constraint,
+    // need the FEValues of the cell: only cells with a body force, a
+    // traction face or such a constraint reinitialize it.
+    copy.inhomogeneous = false;
+    for (const auto dof : copy.dof_indices)
+      copy.inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
+    if (body_force || copy.inhomogeneous)
       scratch.fe_values.reinit(cell);
     if (body_force || cell->at_boundary())
-      add_cell_loads(cell, scratch.fe_values, scratch.fe_face_values, cell_rhs);
-    if (inhomogeneous)
-      {
-        elastic_cell_matrix(scratch.fe_values,
-                            material.stiffness(),
-                            scratch.cell_matrix);
-        constraints.distribute_local_to_global(cell_rhs,
-                                               dof_indices,
-                                               rhs,
-                                               scratch.cell_matrix);
-      }
-    else
-      constraints.distribute_local_to_global(cell_rhs, dof_indices, rhs);
+      add_cell_loads(cell,
+                     scratch.fe_values,
+                     scratch.fe_face_values,
+                     scratch.cell_vector);
+    if (copy.inhomogeneous)
+      elastic_cell_matrix(scratch.fe_values,
+                          displacement_shape_functions,
+                          material.stiffness(),
+                          copy.cell_matrix);
+    for (unsigned int i = 0; i < displacement_shape_functions.size(); ++i)
+      copy.cell_rhs(i) = scratch.cell_vector(displacement_shape_functions[i]);
   }
 
 
@@ -334,7 +304,7 @@ namespace VPContact
         residual_assembly.add(dof_indices, cell_residual);
       }
     residual_assembly.compress(VectorOperation::add);
-    residual_exchange.copy(residual_assembly, residual);
+    residual = residual_assembly;
   }
 
 

@@ -208,8 +208,8 @@ namespace VPContact
                            vectors,
                            stress_history,
                            quadrature.size());
-    solution = solution_owned;
-    increment_exchange.copy(increment_owned, increment);
+    solution  = solution_owned;
+    increment = increment_owned;
 
     // The active sets, and the constraints as the uninterrupted run has
     // them after step n: the stick nodes of the restored set (they shape the

@@ -59,9 +59,7 @@ namespace VPContact
     // of every cell (the values of a Q1 function do not depend on the
     // mapping), so the passes over the cells in every step need from
     // FEValues at most JxW, and those are stored once per mesh: no FEValues
-    // copies the FESystem's shape functions on every cell (measured at 256^2
-    // cells, 50 steps: the statistics took 1.33-1.76 s with zeta from
-    // FEValues, 0.53 s this way).
+    // copies the FESystem's shape functions on every cell.
     template <int dim>
     FullMatrix<double>
     reference_shape_values(const FiniteElement<dim>        &fe,
@@ -278,8 +276,8 @@ namespace VPContact
                               + "] (range at the nodes)",
                             "the damage must lie in [0, 1] (1 is sound).");
     damage_system.scatter(damage_owned, solution_owned);
-    solution_exchange.copy(solution_owned, solution);
-    damage = damage_owned;
+    solution = solution_owned;
+    damage   = damage_owned;
   }
 
 
@@ -355,9 +353,7 @@ namespace VPContact
     // of the reference cell, the Gauss-Lobatto masses and the positions of
     // the nodes in the ghosted vector are kept per cell (see
     // setup_mass_and_bounds()) and the JxW of the Gauss points with the
-    // stress history. Measured at 256^2 cells, 100 steps: 1.43 s of damage
-    // assembly with two FEValues reinitialized on every cell, 0.43-0.61 s
-    // this way; the printed results are the same.
+    // stress history.
     const double             k       = time_discretization.step_size();
     const unsigned int       n_shape = shape.size();
     const FullMatrix<double> psi_gauss
@@ -428,7 +424,7 @@ namespace VPContact
 
     // zeta_{n-1} from the solution, b and b - K zeta_{n-1} of this step.
     damage_system.gather(solution_owned, damage_old);
-    damage_exchange.copy(damage_old, damage);
+    damage = damage_old;
     assemble_damage(false);
     // A source that evaluates to NaN or infinity anywhere spoils the whole
     // load; say so here rather than let CG fail on it.
@@ -443,7 +439,6 @@ namespace VPContact
     // settle, the plain primal-dual active set method from the sets of the
     // previous step, every solve to the Solver tolerance.
     damage_bounds.begin_step(K);
-    damage_system.begin_step();
     const std::vector<BoundStatus> previous_sets = damage_bounds.sets();
     if (!find_damage_sets_fast(step_rhs))
       {
@@ -494,18 +489,16 @@ namespace VPContact
     // multipliers of this step's load, b - K zeta_{n-1}. It starts from the
     // sets of the previous step and already moves the nodes that this load
     // alone pushes off (or onto) a bound; without it the first solve would
-    // only find them (measured: 6 % fewer solves).
-    damage_residual_exchange.copy(step_rhs, damage_residual);
+    // only find them.
+    damage_residual = step_rhs;
     damage_bounds.update(damage_residual,
                          damage,
                          time_discretization.step_size());
 
     // Then the front of the upper set is moved ahead by as many whole rings
     // as it moved in the previous step (see
-    // DamageBounds::free_ahead_of_front()). Measured on the paper scene,
-    // 100 steps: at 256^2 cells 444 damage solves instead of 512; at 128^2,
-    // where the front moves by less than a ring in most steps, 405 instead
-    // of 399.
+    // DamageBounds::free_ahead_of_front()), which saves solves on fine
+    // meshes, where the front moves by several rings in a step.
     damage_bounds.free_ahead_of_front(damage_system.matrix(),
                                       damage_rings_ahead);
 
@@ -562,7 +555,7 @@ namespace VPContact
     // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +
     // bound_change))_F; the held rows of the right-hand side are zero. The
     // change of the previous solve is the start vector.
-    damage_system.vmult_on_support(damage_rhs, bound_change);
+    damage_system.matrix().vmult(damage_rhs, bound_change);
     damage_rhs.sadd(-1., 1., step_rhs);
     for (const auto i : held)
       {
@@ -576,15 +569,15 @@ namespace VPContact
                         linear_solver.iteration_limit());
     damage_change += bound_change;
     damage_system.distribute_hanging_nodes(damage_change);
-    copy_owned_values(damage_old, damage_owned);
+    damage_owned = damage_old;
     damage_owned += damage_change;
-    damage_exchange.copy(damage_owned, damage);
+    damage = damage_owned;
 
     // The multipliers r = b - K zeta = (b - K zeta_{n-1}) - K change
     // (bounds not condensed; hanging nodes carry none) and the next sets.
-    damage_system.vmult_on_support(damage_residual_owned, damage_change);
+    damage_system.matrix().vmult(damage_residual_owned, damage_change);
     damage_residual_owned.sadd(-1., 1., step_rhs);
-    damage_residual_exchange.copy(damage_residual_owned, damage_residual);
+    damage_residual = damage_residual_owned;
     return damage_bounds.update(damage_residual,
                                 damage,
                                 time_discretization.step_size());
@@ -619,9 +612,9 @@ namespace VPContact
     // Hanging nodes take the average of their (clipped) parents again.
     damage_system.distribute_hanging_nodes(damage_owned);
     last_damage_clip = clip;
-    damage_exchange.copy(damage_owned, damage);
+    damage           = damage_owned;
     damage_system.scatter(damage_owned, solution_owned);
-    solution_exchange.copy(solution_owned, solution);
+    solution = solution_owned;
   }
 
 
@@ -633,7 +626,9 @@ namespace VPContact
   {
     // Nodal extremes, the bound violation (which must be exactly 0), and the
     // volume fraction where zeta < 1 at the quadrature points (from
-    // measure_step()).
+    // measure_step()). On a uniform mesh the fraction is a multiple of the
+    // weight of a point and often lands on a tie of the rounding to 0.01 %,
+    // which the order of the sums would decide: it is first rounded to 1e-9.
     const auto [lowest, highest] = damage_range(damage_owned);
     const double violation       = std::max({0., -lowest, highest - 1.});
     max_damage_violation         = std::max(max_damage_violation, violation);
@@ -646,7 +641,7 @@ namespace VPContact
     statistics.add_value("damage_iterations", last_damage_iterations);
     line += "  zeta in [" + to_text(std::round(lowest * 1e6) / 1e6) + ", "
             + to_text(std::round(highest * 1e6) / 1e6) + "]  damaged "
-            + to_text(std::round(fraction * 1e4) / 1e2) + "%";
+            + to_text(std::round(std::round(fraction * 1e9) / 1e5) / 1e2) + "%";
   }
 
 

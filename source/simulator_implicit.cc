@@ -2,7 +2,6 @@
 // Newton iteration whose stress comes from a local Newton solve at every
 // quadrature point, for laws too fast for the paper's explicit step.
 #include <vpcontact/input_error.h>
-#include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -29,9 +28,11 @@ namespace VPContact
     FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
     const FEValuesExtractors::Vector u(0);
     const FEValuesExtractors::Scalar zeta(dim);
-    const unsigned int               dofs_per_cell = fe.n_dofs_per_cell();
+    const std::vector<unsigned int> &shape = displacement_shape_functions;
+    const unsigned int               dofs_per_cell = shape.size();
     FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
     Vector<double>                   cell_rhs(dofs_per_cell);
+    Vector<double>                   cell_loads(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
@@ -40,48 +41,49 @@ namespace VPContact
 
     stiffness_matrix = 0.;
     rhs              = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell_matrix = 0.;
-          cell_rhs    = 0.;
-          fe_values.reinit(cell);
-          fe_values[u].get_function_symmetric_gradients(solution, strains);
-          fe_values[u].get_function_symmetric_gradients(increment,
-                                                        strain_increments);
-          if (damage_model.is_active())
-            fe_values[zeta].get_function_values(solution, damage_values);
-          const auto history = stress_history.get_data(cell);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const auto update = implicit_stress_update(
-                *viscoplastic_law,
-                history[q].stress + material.stress(strain_increments[q]),
-                strains[q] + strain_increments[q],
-                damage_values[q],
-                k,
-                material.stiffness());
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                eps_phi[i] = fe_values[u].symmetric_gradient(i, q);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const SymmetricTensor<2, dim> C_eps_i
-                    = update.tangent * eps_phi[i];
-                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    cell_matrix(i, j)
-                      += (C_eps_i * eps_phi[j]) * fe_values.JxW(q);
-                  cell_rhs(i)
-                    -= (update.stress * eps_phi[i]) * fe_values.JxW(q);
-                }
-            }
-          add_cell_loads(cell, fe_values, fe_face_values, cell_rhs);
-          cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 cell_rhs,
-                                                 dof_indices,
-                                                 stiffness_matrix,
-                                                 rhs);
-        }
+    for (const auto &cell : owned_cells)
+      {
+        cell_matrix = 0.;
+        cell_rhs    = 0.;
+        cell_loads  = 0.;
+        fe_values.reinit(cell);
+        fe_values[u].get_function_symmetric_gradients(solution, strains);
+        fe_values[u].get_function_symmetric_gradients(increment,
+                                                      strain_increments);
+        if (damage_model.is_active())
+          fe_values[zeta].get_function_values(solution, damage_values);
+        const auto history = stress_history.get_data(cell);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const auto update = implicit_stress_update(
+              *viscoplastic_law,
+              history[q].stress + material.stress(strain_increments[q]),
+              strains[q] + strain_increments[q],
+              damage_values[q],
+              k,
+              material.stiffness());
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              eps_phi[i] = fe_values[u].symmetric_gradient(shape[i], q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const SymmetricTensor<2, dim> C_eps_i
+                  = update.tangent * eps_phi[i];
+                for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                  cell_matrix(i, j)
+                    += (C_eps_i * eps_phi[j]) * fe_values.JxW(q);
+                cell_rhs(i) -= (update.stress * eps_phi[i]) * fe_values.JxW(q);
+              }
+          }
+        add_cell_loads(cell, fe_values, fe_face_values, cell_loads);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          cell_rhs(i) += cell_loads(shape[i]);
+        get_displacement_dof_indices(cell, dof_indices);
+        constraints.distribute_local_to_global(cell_matrix,
+                                               cell_rhs,
+                                               dof_indices,
+                                               stiffness_matrix,
+                                               rhs);
+      }
     stiffness_matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
   }
@@ -137,13 +139,17 @@ namespace VPContact
         newton_update = 0.;
         {
           TimerOutput::Scope t(computing_timer, "Solve");
-          last_linear_iterations
-            += linear_solver.solve(stiffness_matrix, newton_update, rhs);
+          last_linear_iterations += linear_solver.solve(newton_update, rhs);
         }
-        distribute_constraints(constraints, newton_update);
-        last_update = newton_update.l2_norm();
-        increment_owned += newton_update;
-        increment_exchange.copy(increment_owned, increment);
+        // The update on all degrees of freedom (the displacement ones lead
+        // the local entries), with its constraints.
+        TrilinosWrappers::MPI::Vector update(increment_owned);
+        update = 0.;
+        std::copy(newton_update.begin(), newton_update.end(), update.begin());
+        constraints.distribute(update);
+        last_update = update.l2_norm();
+        increment_owned += update;
+        increment = increment_owned;
         if (iteration == 1 && boundary_conditions.has_prescribed_displacement())
           {
             TrilinosWrappers::MPI::Vector total(solution_owned);
@@ -156,7 +162,7 @@ namespace VPContact
           break;
       }
     solution_owned += increment_owned;
-    solution_exchange.copy(solution_owned, solution);
+    solution = solution_owned;
   }
 
 

@@ -3,10 +3,12 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
-#include <vpcontact/vertex_patches.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
 
 #include <cstdio>
 #include <fstream>
@@ -29,6 +31,86 @@ namespace VPContact
               "stress_xy",
               "stress_xz",
               "stress_yz"};
+    }
+
+    // The first two components of the contact vector as the scalar fields
+    // contact_status and tangential_traction (the others are unused).
+    template <int dim>
+    class ContactFields : public DataPostprocessor<dim>
+    {
+    public:
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>>                &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          for (unsigned int c = 0; c < 2; ++c)
+            computed[q](c) = inputs.solution_values[q](c);
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return {"contact_status", "tangential_traction"};
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values;
+      }
+    };
+
+    // DataOut, with the patches and names it built handed out, so that a
+    // FieldWriter can write them while the vectors change.
+    template <int dim>
+    class PatchDataOut : public DataOut<dim>
+    {
+    public:
+      FieldPatches<dim>
+      take_patches()
+      {
+        return {this->get_patches(),
+                this->get_dataset_names(),
+                this->get_nonscalar_data_ranges()};
+      }
+    };
+
+    // A ghosted copy of @p owned in the blocks of the numbering
+    // (displacement, damage), each with contiguous owned indices: what
+    // DataOut needs to build its own ghosted vector from it on several
+    // ranks.
+    template <int dim>
+    TrilinosWrappers::MPI::BlockVector
+    block_copy(const TrilinosWrappers::MPI::Vector &owned,
+               const IndexSet                      &owned_dofs,
+               const IndexSet                      &relevant_dofs,
+               const types::global_dof_index        n_u,
+               const MPI_Comm                       communicator)
+    {
+      const types::global_dof_index n = owned_dofs.size();
+      std::vector<IndexSet>         owned_blocks{owned_dofs.get_view(0, n_u)};
+      std::vector<IndexSet> relevant_blocks{relevant_dofs.get_view(0, n_u)};
+      if (n > n_u)
+        {
+          owned_blocks.push_back(owned_dofs.get_view(n_u, n));
+          relevant_blocks.push_back(relevant_dofs.get_view(n_u, n));
+        }
+      TrilinosWrappers::MPI::BlockVector blocks(owned_blocks, communicator);
+      const double                      *entry = owned.begin();
+      for (unsigned int b = 0; b < blocks.n_blocks(); ++b)
+        {
+          std::copy_n(entry,
+                      blocks.block(b).locally_owned_size(),
+                      blocks.block(b).begin());
+          entry += blocks.block(b).locally_owned_size();
+        }
+      TrilinosWrappers::MPI::BlockVector ghosted(owned_blocks,
+                                                 relevant_blocks,
+                                                 communicator);
+      ghosted = blocks;
+      return ghosted;
     }
 
     std::string
@@ -282,41 +364,56 @@ namespace VPContact
   {
     // The solution: displacement (a vector) and, in damage scenes, zeta;
     // the stresses per cell, and the rank that owns each cell.
-    VertexPatches<dim> fields;
-    for (unsigned int d = 0; d < dim; ++d)
-      fields.add_nodal_field(solution, d, "displacement");
-    fields.mark_last_as_vector(dim, "displacement");
+    PatchDataOut<dim>        data_out;
+    std::vector<std::string> names(dim, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
     if (damage_model.is_active())
-      fields.add_nodal_field(solution, dim, "damage");
+      {
+        names.emplace_back("damage");
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
+    data_out.attach_dof_handler(dof_handler);
+    const auto blocks = [&](const TrilinosWrappers::MPI::Vector &owned) {
+      return block_copy<dim>(owned,
+                             locally_owned_dofs,
+                             locally_relevant_dofs,
+                             displacement_owned.size(),
+                             mpi_communicator);
+    };
+    const TrilinosWrappers::MPI::BlockVector solution_blocks
+      = blocks(solution_owned);
+    data_out.add_data_vector(solution_blocks,
+                             names,
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
 
     // Contact nodes: status (0 none, 1 stick, 2 slip) and tangential
     // traction sigma_tau, carried by the first two components of a nodal
-    // vector. Its two vectors are copies of the solution's, so that they
-    // share their layouts: CellKinematics and the GhostExchange recognize
-    // them at once, instead of comparing (and keeping) a new layout in
-    // every output.
-    TrilinosWrappers::MPI::Vector contact_owned(solution_owned),
-      contact(solution);
+    // vector.
+    TrilinosWrappers::MPI::BlockVector contact_blocks;
+    const ContactFields<dim>           contact_fields;
     if (friction_active)
       {
-        contact_owned = 0.;
-        friction_active_set.fill_output(contact_owned);
-        solution_exchange.copy(contact_owned, contact);
-        fields.add_nodal_field(contact, 0, "contact_status");
-        fields.add_nodal_field(contact, 1, "tangential_traction");
+        TrilinosWrappers::MPI::Vector contact(solution_owned);
+        contact = 0.;
+        friction_active_set.fill_output(contact);
+        contact_blocks = blocks(contact);
+        data_out.add_data_vector(contact_blocks, contact_fields);
       }
 
-    fields.add_cell_field(von_mises, "von_mises");
-    const auto names = stress_component_names<dim>();
+    data_out.add_data_vector(von_mises, "von_mises");
+    const auto names_of_stress = stress_component_names<dim>();
     for (unsigned int c = 0; c < components.size(); ++c)
-      fields.add_cell_field(components[c], names[c]);
+      data_out.add_data_vector(components[c], names_of_stress[c]);
     Vector<double> subdomain(triangulation.n_active_cells());
     subdomain = triangulation.locally_owned_subdomain();
-    fields.add_cell_field(subdomain, "subdomain");
+    data_out.add_data_vector(subdomain, "subdomain");
 
-    output_writer.write_fields(fields.build(cell_halves,
-                                            cell_kinematics,
-                                            linear_solver.uses_second_thread()),
+    data_out.build_patches();
+    output_writer.write_fields(data_out.take_patches(),
                                n,
                                time_discretization.time(n),
                                mpi_communicator);

@@ -3,9 +3,11 @@
 #include <vpcontact/rigid_motions.h>
 #include <vpcontact/simulator.h>
 
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <algorithm>
 
@@ -66,34 +68,44 @@ namespace VPContact
     // freedom that no longer exist; the constraints below must not see them.
     friction_active_set = FrictionActiveSet<dim>();
     dof_handler.distribute_dofs(fe);
+    // Numbered by blocks, as in step-32 and step-55: all displacement
+    // degrees of freedom first, node by node, then all damage ones. On each
+    // rank the owned ones of each block are then a contiguous range, and in
+    // the local entries of a vector on all of them the displacement comes
+    // first: the displacement system is the block [0, n_u) alone, and the
+    // damage system the block [n_u, n).
+    std::vector<unsigned int> block_component(fe.n_components(), 0);
+    if (fe.n_components() > dim)
+      block_component[dim] = 1;
+    DoFRenumbering::component_wise(dof_handler, block_component);
+    const types::global_dof_index n_u
+      = DoFTools::count_dofs_per_fe_block(dof_handler, block_component)[0];
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
-    // One constant mode per component for ML, the damage included: in each
-    // of the two systems the rows of the other field are decoupled (held),
-    // and a near-null-space vector that vanishes on them leaves ML with
-    // empty aggregates there.
-    DoFTools::extract_constant_modes(dof_handler,
-                                     ComponentMask(fe.n_components(), true),
-                                     all_constant_modes);
+    displacement_owned    = locally_owned_dofs.get_view(0, n_u);
+    displacement_relevant = locally_relevant_dofs.get_view(0, n_u);
 
     // The constraints at t = 0 have the structure of those of every step
     // (only inhomogeneities of prescribed displacements change), so the
     // matrix built with them serves the whole run.
     make_constraints(0., nullptr);
 
-    // The sparsity pattern of step-40: built on the locally relevant rows,
-    // then the entries of rows owned by other ranks are sent to them.
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned_dofs,
-                                               mpi_communicator,
-                                               locally_relevant_dofs);
+    // The sparsity pattern of the displacement block: Trilinos sends the
+    // entries of rows that other ranks own to them (as in step-32).
+    TrilinosWrappers::SparsityPattern    sparsity(displacement_owned,
+                                               displacement_owned,
+                                               displacement_relevant,
+                                               mpi_communicator);
+    std::vector<types::global_dof_index> u_indices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          get_displacement_dof_indices(cell, u_indices);
+          constraints.add_entries_local_to_global(u_indices, sparsity, false);
+        }
+    sparsity.compress();
     linear_solver.clear(); // it refers to the matrix of the last mesh
-    stiffness_matrix.reinit(locally_owned_dofs,
-                            locally_owned_dofs,
-                            dsp,
-                            mpi_communicator);
+    stiffness_matrix.reinit(sparsity);
 
     // The contact nodes are read off the constraints without friction; the
     // sparsity pattern above, built with those, also holds every pattern
@@ -141,15 +153,15 @@ namespace VPContact
       "Roller boundary ids or Prescribed displacement boundary ids, or with "
       "friction on the contact boundary (Contact/Friction bound > 0).");
 
-    rhs.reinit(locally_owned_dofs, mpi_communicator);
-    find_plain_rhs_cells();
+    rhs.reinit(displacement_owned, mpi_communicator);
+    displacement_increment.reinit(displacement_owned, mpi_communicator);
     solution_owned.reinit(locally_owned_dofs, mpi_communicator);
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
     increment_owned.reinit(locally_owned_dofs, mpi_communicator);
     increment_predictor.reinit(locally_owned_dofs, mpi_communicator);
-    newton_update.reinit(locally_owned_dofs, mpi_communicator);
+    newton_update.reinit(displacement_owned, mpi_communicator);
     increment.reinit(locally_owned_dofs,
                      locally_relevant_dofs,
                      mpi_communicator);
@@ -172,12 +184,6 @@ namespace VPContact
                                          previous);
     if (friction_active)
       friction_active_set.add_stick_constraints(constraints);
-    // The displacement step leaves the damage alone: its increment is held
-    // at zero there.
-    if (damage_model.is_active())
-      for (const auto dof : relevant_dofs_of_components(dim, dim + 1))
-        if (!constraints.is_constrained(dof))
-          constraints.add_line(dof);
     constraints.close();
   }
 
@@ -185,105 +191,62 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::find_plain_rhs_cells()
+  Simulator<dim>::get_displacement_dof_indices(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    std::vector<types::global_dof_index>                 &indices) const
   {
-    // assemble_rhs() visits every cell in every step, and on most cells
-    // AffineConstraints::distribute_local_to_global() only looks up that
-    // no degree of freedom is constrained and adds by global index. On the
-    // cells found here the right-hand side is added by position instead.
-    // Every constraint that changes in time (Dirichlet, prescribed
-    // displacement, contact, stick) sits on the boundary, and the hanging
-    // node constraints are those of the mesh, in the constraints now, so a
-    // cell with no displacement degree of freedom on the boundary or
-    // constrained now stays plain while the mesh does. The damage degrees
-    // of freedom are all constrained in this system and take nothing.
-    // (Q1: the degrees of freedom sit at the vertices.)
-    std::vector<bool> on_boundary(triangulation.n_vertices(), false);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-            for (const unsigned int v : face->vertex_indices())
-              on_boundary[face->vertex_index(v)] = true;
-
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    const unsigned int invalid       = numbers::invalid_unsigned_int;
-    plain_rhs_cell.assign(triangulation.n_active_cells(), false);
-    plain_rhs_positions.assign(triangulation.n_active_cells() * dofs_per_cell,
-                               invalid);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          bool plain = true;
-          for (const unsigned int v : cell->vertex_indices())
-            plain = plain && !on_boundary[cell->vertex_index(v)];
-          cell->get_dof_indices(dof_indices);
-          const unsigned int c = cell->active_cell_index();
-          for (unsigned int i = 0; i < dofs_per_cell && plain; ++i)
-            if (fe.system_to_component_index(i).first < dim)
-              {
-                const auto dof = dof_indices[i];
-                plain          = locally_owned_dofs.is_element(dof)
-                        && !constraints.is_constrained(dof);
-                if (plain)
-                  plain_rhs_positions[c * dofs_per_cell + i]
-                    = locally_owned_dofs.index_within_set(dof);
-              }
-          plain_rhs_cell[c] = plain;
-        }
-    split_plain_rhs_cells();
+    std::vector<types::global_dof_index> all(fe.n_dofs_per_cell());
+    cell->get_dof_indices(all);
+    indices.resize(displacement_shape_functions.size());
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      indices[i] = all[displacement_shape_functions[i]];
   }
 
 
 
   template <int dim>
-  void
-  Simulator<dim>::split_plain_rhs_cells()
+  NearNullSpace
+  Simulator<dim>::rigid_motions() const
   {
-    // assemble_rhs() adds the plain cells of each half by position in a
-    // thread of its own: a cell of the second half that adds to an entry
-    // that a cell of the first half adds to is left to the calling thread,
-    // after both halves, with the cells that are not plain (about one row
-    // of cells along the cut, and the boundary).
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    std::vector<typename DoFHandler<dim>::active_cell_iterator> plain_cells;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && plain_rhs_cell[cell->active_cell_index()])
-        plain_cells.push_back(cell);
-    const auto middle = plain_cells.begin() + plain_cells.size() / 2;
-    rhs_halves[0].assign(plain_cells.begin(), middle);
-    rhs_halves[1].clear();
-
-    std::vector<bool> first_half_entry(locally_owned_dofs.n_elements(), false);
-    const auto        positions = [&](const auto &cell) {
-      const unsigned int *first = plain_rhs_positions.data()
-                                  + cell->active_cell_index() * dofs_per_cell;
-      return make_array_view(first, first + dofs_per_cell);
-    };
-    for (const auto &cell : rhs_halves[0])
-      for (const unsigned int position : positions(cell))
-        if (position != numbers::invalid_unsigned_int)
-          first_half_entry[position] = true;
-    std::vector<bool> serial(triangulation.n_active_cells(), false);
-    for (auto cell = middle; cell != plain_cells.end(); ++cell)
+    // The rigid motions of the body at the displacement nodes, about the
+    // centre of its bounding box (for better conditioned vectors): dim
+    // translations and 1 (2D) or 3 (3D) rotations, for AMG's near null
+    // space.
+    NearNullSpace space;
+    space.dofs_per_node = dim;
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                         dof_handler,
+                                         support_points);
+    const Point<dim> centre
+      = GridTools::compute_bounding_box(triangulation).center();
+    const unsigned int n_modes = (dim == 2 ? 3 : 6);
+    space.modes.assign(n_modes,
+                       TrilinosWrappers::MPI::Vector(displacement_owned,
+                                                     mpi_communicator));
+    for (unsigned int d = 0; d < dim; ++d)
       {
-        bool shared = false;
-        for (const unsigned int position : positions(*cell))
-          shared = shared
-                   || (position != numbers::invalid_unsigned_int
-                       && first_half_entry[position]);
-        if (shared)
-          serial[(*cell)->active_cell_index()] = true;
-        else
-          rhs_halves[1].push_back(*cell);
+        ComponentMask mask(fe.n_components(), false);
+        mask.set(d, true);
+        for (const auto dof : DoFTools::extract_dofs(dof_handler, mask))
+          {
+            const Tensor<1, dim> x = support_points.at(dof) - centre;
+            space.modes[d](dof)    = 1.;
+            // Rotation about axis a: the velocity e_a x x, component d.
+            for (unsigned int a = 0; a < n_modes - dim; ++a)
+              {
+                const unsigned int axis = (dim == 2 ? 2 : a);
+                Tensor<1, 3>       e, y;
+                e[axis] = 1.;
+                for (unsigned int c = 0; c < dim; ++c)
+                  y[c] = x[c];
+                space.modes[dim + a](dof) = cross_product_3d(e, y)[d];
+              }
+          }
       }
-    rhs_serial_cells.clear();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned()
-          && (!plain_rhs_cell[cell->active_cell_index()]
-              || serial[cell->active_cell_index()]))
-        rhs_serial_cells.push_back(cell);
+    for (auto &mode : space.modes)
+      mode.compress(VectorOperation::insert);
+    return space;
   }
 
 
@@ -307,7 +270,10 @@ namespace VPContact
           stress_history.set_JxW(cell, fe_values.get_JxW_values());
         }
     cell_kinematics.reinit(dof_handler, quadrature, solution);
-    cell_halves.reinit(dof_handler);
+    owned_cells.clear();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned_cells.push_back(cell);
   }
 
 

@@ -2,10 +2,10 @@
 // E eps(du) at every quadrature point, its safeguards, and the quantities
 // derived from it for output.
 #include <vpcontact/input_error.h>
-#include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
 
+#include <deal.II/base/parallel.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
@@ -52,8 +52,11 @@ namespace VPContact
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<double>                  damage_values(quadrature.size(), 1.);
     double                               largest = 0;
-    for (const auto &cell : cell_halves.chunk(c, stress_chunks))
+    const std::size_t first = owned_cells.size() * c / stress_chunks;
+    const std::size_t last  = owned_cells.size() * (c + 1) / stress_chunks;
+    for (std::size_t i = first; i < last; ++i)
       {
+        const auto &cell = owned_cells[i];
         cell_kinematics.strains(cell,
                                 increment_entries,
                                 make_array_view(strain_increments));
@@ -103,54 +106,6 @@ namespace VPContact
 
 
   template <int dim>
-  std::future<unsigned int>
-  Simulator<dim>::solve_with_stress_ahead()
-  {
-    // Once the factors have solved in the second thread, it also starts on
-    // the stress update while the damage step runs in this one: once the
-    // damage has spread, the damage step is the longer of the two (at
-    // 512^2 cells by 90 ms per step). A chunk is the same bits whichever
-    // thread computes it. CellKinematics checks the increment's layout
-    // here (the check may call MPI) and remembers it (not safe in two
-    // threads).
-    const double *const increment_entries
-      = cell_kinematics.local_entries(increment);
-    return linear_solver.solve_in_background(
-      increment_owned,
-      rhs,
-      [this, increment_entries]() { update_stress_ahead(increment_entries); });
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::update_stress_ahead(const double *const increment_entries)
-  {
-    // Runs in the second thread, on one rank (the factors solve in the
-    // background only there): no MPI function. On one rank the constraints
-    // read only owned entries, and the ghosted increment has the layout of
-    // the owned one.
-    AssertThrow(!increment.has_ghost_elements()
-                  && increment.locally_owned_size()
-                       == increment_owned.locally_owned_size(),
-                ExcInternalError());
-    distribute_owned_constraints(constraints, increment_owned);
-    std::copy(increment_owned.begin(),
-              increment_owned.end(),
-              increment.begin());
-    increment_ready = true;
-    stress_chunk_largest.resize(stress_chunks);
-    stress_ahead.run_ahead(stress_chunks,
-                           [this, increment_entries](const unsigned int c) {
-                             stress_chunk_largest[c]
-                               = update_stress_chunk(c, increment_entries);
-                           });
-  }
-
-
-
-  template <int dim>
   void
   Simulator<dim>::update_stress(const unsigned int n)
   {
@@ -158,33 +113,27 @@ namespace VPContact
 
     // Backward Euler solves for the stress again from sigma_{n-1}, with the
     // strain of u_n and the damage zeta_{n-1} (still in the solution).
-    // The chunks the second thread did ahead (see update_stress_ahead())
-    // are done; the others run in two halves where there is a second core.
-    // Each chunk writes only the quadrature points of its cells and
-    // returns its largest stress component, to catch an explicit step that
-    // has blown up.
+    // The chunks run in the threads deal.II has (TBB). Each writes only
+    // the quadrature points of its cells and returns its largest stress
+    // component, to catch an explicit step that has blown up.
     const bool          implicit = viscoplasticity.implicit() && n > 0;
     const double *const increment_entries
       = cell_kinematics.local_entries(increment);
     const double *const solution_entries
       = implicit ? cell_kinematics.local_entries(solution) : nullptr;
-    const unsigned int first  = stress_ahead.take_done();
-    const unsigned int middle = (first + stress_chunks) / 2;
-    stress_chunk_largest.resize(stress_chunks);
-    run_in_halves(linear_solver.uses_second_thread(),
-                  [&](const unsigned int half) {
-                    for (unsigned int c = (half == 0 ? first : middle);
-                         c < (half == 0 ? middle : stress_chunks);
-                         ++c)
-                      stress_chunk_largest[c]
-                        = update_stress_chunk(c,
-                                              increment_entries,
-                                              solution_entries);
-                    return 0;
-                  });
-    double largest = *std::max_element(stress_chunk_largest.begin(),
-                                       stress_chunk_largest.end());
-    largest        = Utilities::MPI::max(largest, mpi_communicator);
+    std::vector<double> chunk_largest(stress_chunks);
+    parallel::apply_to_subranges(
+      0u,
+      stress_chunks,
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int c = begin; c < end; ++c)
+          chunk_largest[c]
+            = update_stress_chunk(c, increment_entries, solution_entries);
+      },
+      1);
+    double largest
+      = *std::max_element(chunk_largest.begin(), chunk_largest.end());
+    largest = Utilities::MPI::max(largest, mpi_communicator);
 
     const double limit
       = viscoplasticity.divergence_limit() * material.youngs_modulus();
@@ -219,22 +168,24 @@ namespace VPContact
     von_mises.reinit(triangulation.n_active_cells());
     components.assign(SymmetricTensor<2, dim>::n_independent_components,
                       Vector<double>(triangulation.n_active_cells()));
-    // Each cell writes its own entries: the two halves run at once where
-    // there is a second core.
-    run_in_halves(linear_solver.uses_second_thread(),
-                  [&](const unsigned int half) {
-                    for (const auto &cell : cell_halves.half(half))
-                      {
-                        const SymmetricTensor<2, dim> average
-                          = cell_average_stress(stress_history.get_data(cell),
-                                                stress_history.JxW(cell));
-                        const unsigned int index = cell->active_cell_index();
-                        von_mises(index)         = von_mises_norm(average);
-                        for (unsigned int c = 0; c < components.size(); ++c)
-                          components[c](index) = average.access_raw_entry(c);
-                      }
-                    return 0;
-                  });
+    // Each cell writes its own entries.
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      owned_cells.size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          {
+            const auto                   &cell = owned_cells[i];
+            const SymmetricTensor<2, dim> average
+              = cell_average_stress(stress_history.get_data(cell),
+                                    stress_history.JxW(cell));
+            const unsigned int index = cell->active_cell_index();
+            von_mises(index)         = von_mises_norm(average);
+            for (unsigned int c = 0; c < components.size(); ++c)
+              components[c](index) = average.access_raw_entry(c);
+          }
+      },
+      64);
   }
 
 
@@ -243,8 +194,7 @@ namespace VPContact
   typename Simulator<dim>::StepMeasures
   Simulator<dim>::measure_step() const
   {
-    // One pass over the cells for what every step reports (at 512^2 cells
-    // four passes took 19 ms per step, see doc/performance.md):
+    // One pass over the cells for what every step reports:
     // - the largest von Mises stress of the cell averages of sigma (the
     //   paper's P_Q sigma, as in the fields);
     // - the largest nodal |u|, over the nodes of the locally owned cells,
@@ -252,9 +202,8 @@ namespace VPContact
     // - the energy stored in the stress, 1/2 (E^{-1} sigma, sigma): for an
     //   elastic body 1/2 (E eps(u), eps(u)), lowered by viscous relaxation;
     // - with damage, the volume where zeta < 1 at the quadrature points.
-    // The sums run over each half of the cells in its order, then the two
-    // halves are added, in this order with one thread or two: the same
-    // bits either way.
+    // The sums run over chunks of the cells in the threads, and the chunks
+    // are added in their order: the same bits with any number of threads.
     struct Sums
     {
       double von_mises_max = 0, u_square_max = 0, energy = 0, damaged = 0,
@@ -266,80 +215,89 @@ namespace VPContact
     const bool                    with_damage = damage_model.is_active();
     const double *const entries = cell_kinematics.local_entries(solution);
     const unsigned int  n_nodes = cell_kinematics.nodes_per_cell();
-    const auto          sums    = run_in_halves(
-      linear_solver.uses_second_thread(),
-      [&](const unsigned int half) {
-        Sums                sums;
-        std::vector<double> norm_square(n_nodes), component(n_nodes),
-          zeta(quadrature.size());
-        for (const auto &cell : cell_halves.half(half))
-          {
-            const auto history = stress_history.get_data(cell);
-            const auto JxW     = stress_history.JxW(cell);
-            for (unsigned int q = 0; q < history.size(); ++q)
-              sums.energy += 0.5 * (compliance * history[q].stress)
-                             * history[q].stress * JxW[q];
-            const SymmetricTensor<2, dim> average
-              = cell_average_stress(history, JxW);
-            sums.von_mises_max
-              = std::max(sums.von_mises_max, von_mises_norm(average));
+    std::vector<Sums>   chunk_sums(stress_chunks);
+    const auto          sum_chunk = [&](const unsigned int c) {
+      Sums               &sums = chunk_sums[c];
+      std::vector<double> norm_square(n_nodes), component(n_nodes),
+        zeta(quadrature.size());
+      for (std::size_t i = owned_cells.size() * c / stress_chunks;
+           i < owned_cells.size() * (c + 1) / stress_chunks;
+           ++i)
+        {
+          const auto &cell    = owned_cells[i];
+          const auto  history = stress_history.get_data(cell);
+          const auto  JxW     = stress_history.JxW(cell);
+          for (unsigned int q = 0; q < history.size(); ++q)
+            sums.energy += 0.5 * (compliance * history[q].stress)
+                           * history[q].stress * JxW[q];
+          const SymmetricTensor<2, dim> average
+            = cell_average_stress(history, JxW);
+          sums.von_mises_max
+            = std::max(sums.von_mises_max, von_mises_norm(average));
 
-            std::fill(norm_square.begin(), norm_square.end(), 0.);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                cell_kinematics.nodal_values(cell,
-                                             entries,
-                                             d,
-                                             make_array_view(component));
-                for (unsigned int a = 0; a < n_nodes; ++a)
-                  norm_square[a] += component[a] * component[a];
-              }
-            for (unsigned int a = 0; a < n_nodes; ++a)
-              {
-                sums.u_square_max = std::max(sums.u_square_max, norm_square[a]);
-                sums.u_finite = sums.u_finite && std::isfinite(norm_square[a]);
-              }
+          std::fill(norm_square.begin(), norm_square.end(), 0.);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              cell_kinematics.nodal_values(cell,
+                                           entries,
+                                           d,
+                                           make_array_view(component));
+              for (unsigned int a = 0; a < n_nodes; ++a)
+                norm_square[a] += component[a] * component[a];
+            }
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            {
+              sums.u_square_max = std::max(sums.u_square_max, norm_square[a]);
+              sums.u_finite = sums.u_finite && std::isfinite(norm_square[a]);
+            }
 
-            if (with_damage)
-              {
-                cell_kinematics.damage(cell, entries, make_array_view(zeta));
-                for (unsigned int q = 0; q < JxW.size(); ++q)
-                  {
-                    sums.volume += JxW[q];
-                    sums.zeta_finite
-                      = sums.zeta_finite && std::isfinite(zeta[q]);
-                    if (zeta[q] < 1. - 1e-12)
-                      sums.damaged += JxW[q];
-                  }
-              }
-          }
-        return sums;
-      });
+          if (with_damage)
+            {
+              cell_kinematics.damage(cell, entries, make_array_view(zeta));
+              for (unsigned int q = 0; q < JxW.size(); ++q)
+                {
+                  sums.volume += JxW[q];
+                  sums.zeta_finite = sums.zeta_finite && std::isfinite(zeta[q]);
+                  if (zeta[q] < 1. - 1e-12)
+                    sums.damaged += JxW[q];
+                }
+            }
+        }
+    };
+    parallel::apply_to_subranges(
+      0u,
+      stress_chunks,
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int c = begin; c < end; ++c)
+          sum_chunk(c);
+      },
+      1);
+    Sums sums;
+    for (const Sums &chunk : chunk_sums)
+      {
+        sums.von_mises_max = std::max(sums.von_mises_max, chunk.von_mises_max);
+        sums.u_square_max  = std::max(sums.u_square_max, chunk.u_square_max);
+        sums.energy += chunk.energy;
+        sums.damaged += chunk.damaged;
+        sums.volume += chunk.volume;
+        sums.u_finite    = sums.u_finite && chunk.u_finite;
+        sums.zeta_finite = sums.zeta_finite && chunk.zeta_finite;
+      }
 
     StepMeasures measures;
     measures.von_mises_max
-      = Utilities::MPI::max(std::max(sums[0].von_mises_max,
-                                     sums[1].von_mises_max),
-                            mpi_communicator);
+      = Utilities::MPI::max(sums.von_mises_max, mpi_communicator);
     measures.u_max
-      = Utilities::MPI::max(std::sqrt(std::max(sums[0].u_square_max,
-                                               sums[1].u_square_max)),
-                            mpi_communicator);
-    measures.energy
-      = Utilities::MPI::sum(sums[0].energy + sums[1].energy, mpi_communicator);
+      = Utilities::MPI::max(std::sqrt(sums.u_square_max), mpi_communicator);
+    measures.energy = Utilities::MPI::sum(sums.energy, mpi_communicator);
     measures.u_finite
-      = !Utilities::MPI::logical_or(!(sums[0].u_finite && sums[1].u_finite),
-                                    mpi_communicator);
+      = !Utilities::MPI::logical_or(!sums.u_finite, mpi_communicator);
     measures.zeta_finite
-      = !Utilities::MPI::logical_or(!(sums[0].zeta_finite
-                                      && sums[1].zeta_finite),
-                                    mpi_communicator);
+      = !Utilities::MPI::logical_or(!sums.zeta_finite, mpi_communicator);
     if (with_damage)
       measures.damaged_fraction
-        = Utilities::MPI::sum(sums[0].damaged + sums[1].damaged,
-                              mpi_communicator)
-          / Utilities::MPI::sum(sums[0].volume + sums[1].volume,
-                                mpi_communicator);
+        = Utilities::MPI::sum(sums.damaged, mpi_communicator)
+          / Utilities::MPI::sum(sums.volume, mpi_communicator);
     return measures;
   }
 

@@ -8,6 +8,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/thread_local_storage.h>
 
 #include <array>
 #include <memory>
@@ -42,11 +43,10 @@ namespace VPContact
     double
     diffusion() const;
 
-    /// phi. A muParser expression keeps its variables in the object, so
-    /// two threads evaluate it through two copies: @p copy 0 or 1 (see
-    /// run_in_halves()).
+    /// phi, the calling thread's copy: a muParser expression keeps its
+    /// variables in the object, so each thread evaluates its own.
     const DamageSource<dim> &
-    source(const unsigned int copy = 0) const;
+    source() const;
 
     /// zeta_0(x), with values in [0, 1] (checked where it is used).
     const Function<dim> &
@@ -79,13 +79,15 @@ namespace VPContact
     description() const;
 
   private:
-    bool                                              active = false;
-    double                                            kappa  = 0.01;
-    std::string                                       source_expression;
-    std::string                                       initial_expression;
-    std::array<std::unique_ptr<DamageSource<dim>>, 2> damage_source;
-    std::unique_ptr<FunctionParser<dim>>              initial;
-    unsigned int                                      iteration_cap = 50;
+    bool                          active = false;
+    double                        kappa  = 0.01;
+    std::string                   source_expression;
+    std::string                   initial_expression;
+    std::map<std::string, double> source_constants;
+    mutable Threads::ThreadLocalStorage<std::shared_ptr<DamageSource<dim>>>
+                                         damage_source;
+    std::unique_ptr<FunctionParser<dim>> initial;
+    unsigned int                         iteration_cap = 50;
   };
 } // namespace VPContact
 

@@ -5,8 +5,7 @@
 #ifndef vpcontact_damage_system_h
 #define vpcontact_damage_system_h
 
-#include <vpcontact/damage_region_solver.h>
-#include <vpcontact/support_product.h>
+#include <vpcontact/spd_solver.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
@@ -48,14 +47,6 @@ namespace VPContact
   class DamageSystem
   {
   public:
-    enum class Preconditioner
-    {
-      modified_diagonal_incomplete_cholesky,
-      modified_incomplete_cholesky,
-      incomplete_cholesky,
-      amg
-    };
-
     static void
     declare_parameters(ParameterHandler &prm);
 
@@ -136,21 +127,17 @@ namespace VPContact
     TrilinosWrappers::SparseMatrix &
     matrix();
 
-    /// Build the preconditioner of the assembled matrix, and the matrix's
-    /// copy by columns for vmult_on_support() (after assembly).
+    /// Build the preconditioner of the assembled matrix.
     void
     initialize_preconditioner();
 
     /**
      * Solve K_FF x_F = b_F on the free nodes, x = 0 on the nodes listed in
-     * @p held (local positions, see local_position()). With the incomplete
-     * Cholesky preconditioner: CG over the free nodes alone
-     * (DamageRegionSolver). With AMG: CG on P K P + (I - P), P zeroing the
-     * held entries, preconditioned alike by P C P + (I - P) for the AMG C
-     * of K, so that neither is rebuilt when the held set changes. @p b and @p x
-     * must be zero on the held nodes (@p x is the start vector). Stops at a
-     * residual of @p tolerance times |b|; throws a message naming the
-     * Solver parameters otherwise. Returns the number of CG iterations.
+     * @p held (local positions, see local_position()), by CG masked on the
+     * held nodes (see SpdSolver). @p b and @p x must be zero on the held
+     * nodes (@p x is the start vector). Stops at a residual of @p tolerance
+     * times |b|; throws a message naming the Solver parameters otherwise.
+     * Returns the number of CG iterations.
      */
     unsigned int
     solve(const TrilinosWrappers::MPI::Vector &b,
@@ -159,24 +146,6 @@ namespace VPContact
           const double                         tolerance,
           const unsigned int                   max_iterations);
 
-    /**
-     * y = K x, at the cost of the nonzero entries of x (see
-     * SupportProduct); for the changes of a damage solve, which vanish at
-     * most nodes. Collective. Needs initialize_preconditioner().
-     */
-    void
-    vmult_on_support(TrilinosWrappers::MPI::Vector       &y,
-                     const TrilinosWrappers::MPI::Vector &x);
-
-    /// A new time step begins: with the incomplete Cholesky preconditioner
-    /// the region of its solves is built anew (see DamageRegionSolver).
-    void
-    begin_step();
-
-    /// How often the incomplete Cholesky solver built its region on this
-    /// rank (see DamageRegionSolver).
-    unsigned int
-    n_region_builds() const;
 
   private:
     /// Sets the index sets, full_position and cell_dofs; returns a ghosted
@@ -188,12 +157,6 @@ namespace VPContact
                 const IndexSet        &locally_relevant_dofs,
                 const MPI_Comm         communicator);
 
-    /// CG with the AMG of K, masked on the held nodes (see solve()).
-    void
-    solve_masked(const TrilinosWrappers::MPI::Vector &b,
-                 TrilinosWrappers::MPI::Vector       &x,
-                 const std::vector<unsigned int>     &held,
-                 SolverControl                       &control) const;
 
     static types::global_dof_index
     to_compact(const TrilinosWrappers::MPI::Vector &index,
@@ -218,14 +181,12 @@ namespace VPContact
     /// Whether any rank has a hanging node.
     bool has_hanging_nodes = false;
 
-    Preconditioner preconditioner_kind
-      = Preconditioner::modified_diagonal_incomplete_cholesky;
-    TrilinosWrappers::SparseMatrix                      system_matrix;
-    std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
-    /// K x for vectors x that vanish at most nodes.
-    SupportProduct support_product;
-    /// The solver with the incomplete Cholesky preconditioner.
-    DamageRegionSolver region_solver;
+    /// Solver/Damage preconditioner, and the package of Solver/Linear
+    /// algebra.
+    SpdMethod                      method  = SpdMethod::cg_incomplete_cholesky;
+    LinearAlgebra                  package = LinearAlgebra::trilinos;
+    TrilinosWrappers::SparseMatrix system_matrix;
+    std::unique_ptr<SpdSolver>     solver;
   };
 } // namespace VPContact
 

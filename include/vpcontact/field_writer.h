@@ -1,12 +1,12 @@
-// Writing the .vtu piece of one field output, in a second thread while the
-// time steps go on, or at once.
+// Writing the .vtu piece of one field output, in a task of deal.II's threads
+// while the time steps go on, or at once.
 #ifndef vpcontact_field_writer_h
 #define vpcontact_field_writer_h
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/thread_management.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 
-#include <future>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -38,10 +38,9 @@ namespace VPContact
   };
 
   /**
-   * Compresses and writes the .vtu piece of one field output. At 512^2
-   * cells a piece takes about 0.5 s to compress and write, in every tenth step
-   * of the paper scene; in a second thread that time overlaps with the next
-   * steps, as ASPECT's "Write in background thread" does. The piece is written
+   * Compresses and writes the .vtu piece of one field output. In a task of
+   * its own, the compression and the write overlap with the next steps, as
+   * ASPECT's "Write in background thread" does. The piece is written
    * through a temporary file and a rename, so that it is on disk either whole
    * or not at all.
    *
@@ -57,9 +56,9 @@ namespace VPContact
     ~FieldWriter();
 
     /**
-     * Write @p fields to the file @p filename with @p flags: in a second
-     * thread if @p in_background, else before returning (a failure is
-     * still reported by wait()).
+     * Write @p fields to the file @p filename with @p flags: in a task
+     * (Threads::new_task) if @p in_background, else before returning (a failure
+     * is still reported by wait()).
      */
     void
     start(FieldPatches<dim>          &&fields,
@@ -79,7 +78,11 @@ namespace VPContact
     wait();
 
   private:
-    std::future<void> write;
+    Threads::Task<std::string> write;
+    /// Whether a write was started and not yet waited for, and what went
+    /// wrong with a write done at once.
+    bool        started = false;
+    std::string failure;
   };
 } // namespace VPContact
 

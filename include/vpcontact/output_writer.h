@@ -29,7 +29,7 @@ namespace VPContact
    * complete up to the last finished step, never half-written.
    *
    * The .vtu pieces of a field output are compressed and written by a
-   * FieldWriter, by default in a second thread while the next steps are
+   * FieldWriter, by default in a task of its own while the next steps are
    * computed. The .pvtu and .pvd records name a field output only once
    * every rank's piece is on disk: when the next field output starts, and
    * in finish_field_output().

@@ -4,7 +4,6 @@
 #define vpcontact_simulator_h
 
 #include <vpcontact/boundary_conditions.h>
-#include <vpcontact/cell_halves.h>
 #include <vpcontact/cell_kinematics.h>
 #include <vpcontact/checkpointing.h>
 #include <vpcontact/convergence_table.h>
@@ -14,7 +13,6 @@
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/friction_active_set.h>
 #include <vpcontact/geometry.h>
-#include <vpcontact/ghost_exchange.h>
 #include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
 #include <vpcontact/linear_solver.h>
@@ -108,27 +106,11 @@ namespace VPContact
     stopped_for_resume() const;
 
   private:
-    /// The work vectors of one thread of assemble_rhs() (see
-    /// compute_cell_rhs()).
-    struct RhsScratch
-    {
-      RhsScratch(const unsigned int n_q_points,
-                 const unsigned int dofs_per_cell)
-        : strains(n_q_points)
-        , weighted_predictor(n_q_points)
-        , damage_values(n_q_points, 1.)
-        , cell_rhs(dofs_per_cell)
-      {}
-      std::vector<SymmetricTensor<2, dim>> strains;
-      std::vector<SymmetricTensor<2, dim>> weighted_predictor;
-      std::vector<double>                  damage_values;
-      Vector<double>                       cell_rhs;
-    };
-
     /**
      * The FEValues of a pass over the cells that assembles forces: values,
      * gradients, points and weights on the cell, and on faces for the
      * traction (the rule of the stress history and a Gauss rule on faces).
+     * One per thread of WorkStream, which copies it.
      */
     struct AssemblyScratch
     {
@@ -142,14 +124,36 @@ namespace VPContact
                          QGauss<dim - 1>(fe.degree + 1),
                          update_values | update_quadrature_points
                            | update_JxW_values)
-        , cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
-        , dof_indices(fe.n_dofs_per_cell())
+        , strains(quadrature.size())
+        , weighted_predictor(quadrature.size())
+        , damage_values(quadrature.size(), 1.)
       {}
-      FEValues<dim>     fe_values;
-      FEFaceValues<dim> fe_face_values;
-      /// For the cells with an inhomogeneous constraint.
+      AssemblyScratch(const AssemblyScratch &scratch)
+        : AssemblyScratch(scratch.fe_values.get_fe(),
+                          scratch.fe_values.get_quadrature())
+      {}
+      FEValues<dim>                        fe_values;
+      FEFaceValues<dim>                    fe_face_values;
+      std::vector<SymmetricTensor<2, dim>> strains;
+      std::vector<SymmetricTensor<2, dim>> weighted_predictor;
+      std::vector<double>                  damage_values;
+      /// On all shape functions of the cell, the damage ones included.
+      Vector<double> cell_vector;
+    };
+
+    /// What a cell adds to the right-hand side: its vector and, where a
+    /// constraint is inhomogeneous, its matrix (see assemble_rhs()).
+    struct CellRhs
+    {
+      explicit CellRhs(const unsigned int dofs_per_cell)
+        : cell_rhs(dofs_per_cell)
+        , cell_matrix(dofs_per_cell, dofs_per_cell)
+        , dof_indices(dofs_per_cell)
+      {}
+      Vector<double>                       cell_rhs;
       FullMatrix<double>                   cell_matrix;
       std::vector<types::global_dof_index> dof_indices;
+      bool                                 inhomogeneous = false;
     };
 
     // simulator.cc
@@ -159,12 +163,9 @@ namespace VPContact
     compute_initial_state();
     void
     solve_step(const unsigned int n);
-    /// The displacement increment of the step at @p time; @p beside (the
-    /// damage step, if given) runs once, beside the first linear solve.
+    /// The displacement increment of the step at @p time.
     void
-    solve_increment(const double                 time,
-                    const bool                   with_viscoplastic_rate,
-                    const std::function<void()> &beside = {});
+    solve_increment(const double time, const bool with_viscoplastic_rate);
     void
     initialize_linear_solver();
     void
@@ -196,10 +197,14 @@ namespace VPContact
                      const TrilinosWrappers::MPI::Vector *previous);
     void
     setup_stress_history();
+    NearNullSpace
+    rigid_motions() const;
+    /// The displacement degrees of freedom of @p cell, in the order of
+    /// displacement_shape_functions.
     void
-    find_plain_rhs_cells();
-    void
-    split_plain_rhs_cells();
+    get_displacement_dof_indices(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      std::vector<types::global_dof_index>                 &indices) const;
 
     // simulator_assembly.cc
     void
@@ -218,13 +223,14 @@ namespace VPContact
                      const double        previous_time,
                      const bool          evaluate_rate,
                      const double *const solution_entries,
-                     const unsigned int  copy,
-                     RhsScratch         &scratch);
+                     AssemblyScratch    &scratch,
+                     CellRhs            &copy);
     void
-    add_cell_rhs(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                 const bool       body_force,
-                 AssemblyScratch &scratch,
-                 Vector<double>  &cell_rhs);
+    add_cell_loads_and_lifts(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const bool                                            body_force,
+      AssemblyScratch                                      &scratch,
+      CellRhs                                              &copy);
 
     // simulator_implicit.cc
     void
@@ -238,22 +244,12 @@ namespace VPContact
     /// The stress update of chunk @p c of the cells (see stress_chunks)
     /// from the local entries of the increment and, for the implicit
     /// update, of the solution (else nullptr), as
-    /// CellKinematics::local_entries() gives them in the calling thread;
-    /// returns its largest stress component (infinity for NaN).
+    /// CellKinematics::local_entries() gives them; returns its largest
+    /// stress component (infinity for NaN).
     double
     update_stress_chunk(const unsigned int  c,
                         const double *const increment_entries,
                         const double *const solution_entries = nullptr);
-    /// The solve with the factors in the second thread, which then goes on
-    /// with update_stress_ahead(); as LinearSolver::solve_in_background().
-    std::future<unsigned int>
-    solve_with_stress_ahead();
-    /// In the second thread, once the substitutions have given the
-    /// increment: its constraints, its ghosted copy (@p increment_entries,
-    /// its local entries), and chunks of the stress update while the damage
-    /// step still runs (one rank only).
-    void
-    update_stress_ahead(const double *const increment_entries);
     void
     compute_cell_stresses(Vector<double>              &von_mises,
                           std::vector<Vector<double>> &components) const;
@@ -382,25 +378,28 @@ namespace VPContact
     DoFHandler<dim>   dof_handler;
     IndexSet          locally_owned_dofs;
     IndexSet          locally_relevant_dofs;
+    /// The displacement block [0, n_u) of the numbering (see setup_dofs()):
+    /// its owned and relevant degrees of freedom, and the shape functions of
+    /// a cell that belong to it.
+    IndexSet                  displacement_owned;
+    IndexSet                  displacement_relevant;
+    std::vector<unsigned int> displacement_shape_functions;
     /// Constraints on the increment du of the current step.
     AffineConstraints<double> constraints;
 
+    /// The displacement system, on the displacement block: K, b, and the
+    /// solver's vector (du on the block).
     TrilinosWrappers::SparseMatrix stiffness_matrix;
     TrilinosWrappers::MPI::Vector  rhs;
+    TrilinosWrappers::MPI::Vector  displacement_increment;
     /// u_n: owned part and ghosted copy for evaluation and output.
     TrilinosWrappers::MPI::Vector solution_owned;
     TrilinosWrappers::MPI::Vector solution;
     /// du = u_n - u_{n-1}: owned part (the solver's vector), ghosted copy.
     TrilinosWrappers::MPI::Vector increment_owned;
     TrilinosWrappers::MPI::Vector increment;
-    /// The copies of the owned vectors into their ghosted ones (see
-    /// GhostExchange), one per pair, each with the import it keeps.
-    GhostExchange solution_exchange;
-    GhostExchange increment_exchange;
-    GhostExchange damage_exchange;
-    GhostExchange damage_residual_exchange;
-    GhostExchange residual_exchange;
-    /// A Newton correction of the implicit step (owned).
+    /// A Newton correction of the implicit step (owned, displacement
+    /// block).
     TrilinosWrappers::MPI::Vector newton_update;
 
     /// r = b - A(du), uncondensed, for the friction multipliers: a vector
@@ -410,40 +409,15 @@ namespace VPContact
     /// The locally owned cells with a contact node, where r is assembled.
     std::vector<typename DoFHandler<dim>::active_cell_iterator> contact_cells;
 
-    /// For each locally owned cell (by active cell index) whose
-    /// displacement degrees of freedom are all owned, off the boundary and
-    /// unconstrained: their positions in the local storage of rhs (dofs
-    /// per cell of them; an invalid position for the damage ones). Empty
-    /// for the other cells. See find_plain_rhs_cells().
-    std::vector<unsigned int> plain_rhs_positions;
-    std::vector<bool>         plain_rhs_cell;
-    /// The plain cells in two halves that add to no common entry of rhs,
-    /// for two threads, and the other cells in their order, for the
-    /// calling thread after them. See find_plain_rhs_cells().
-    std::array<std::vector<typename DoFHandler<dim>::active_cell_iterator>, 2>
-      rhs_halves;
-    std::vector<typename DoFHandler<dim>::active_cell_iterator>
-      rhs_serial_cells;
-
     StressHistory<dim> stress_history;
 
     /// Shape gradients, points and vector positions of every locally owned
     /// cell, for the passes over all cells in every step (once per mesh).
     CellKinematics<dim> cell_kinematics;
-    /// The locally owned cells in two halves, for the passes over all cells
-    /// (two threads where there is a second core; once per mesh).
-    CellHalves<dim> cell_halves;
-    /// The stress update in chunks, some of which the second thread may
-    /// have done ahead (see update_stress_ahead()), with the largest
-    /// stress component of each chunk; whether the increment it read is
-    /// distributed and copied already.
-    WorkAhead                     stress_ahead;
-    std::vector<double>           stress_chunk_largest;
-    bool                          increment_ready = false;
-    static constexpr unsigned int stress_chunks   = 64;
-
-    /// One constant mode per component, for ML (computed once per mesh).
-    std::vector<std::vector<bool>> all_constant_modes;
+    /// The locally owned cells, for the passes over all of them in every
+    /// step, which split them into stress_chunks chunks for the threads.
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_cells;
+    static constexpr unsigned int stress_chunks = 64;
 
     // The damage step (damage scenes only): its linear algebra on the
     // damage degrees of freedom alone, its active set, and its vectors, all

@@ -15,10 +15,10 @@
 #include <algorithm>
 #include <iostream>
 
-#include "damage_region_test_tools.h"
+#include "damage_matrix_tools.h"
 
 using namespace VPContact;
-using namespace VPContact::DamageRegionTestTools;
+using namespace VPContact::DamageMatrixTools;
 
 namespace
 {
