@@ -1,227 +1,397 @@
 #!/usr/bin/python3
-"""Benchmark of the paper scene (prm/paper_fig1.prm: friction, damage,
-output every 10 steps, 100 steps) at several mesh sizes, serial and on 2
-MPI ranks at the largest size. Writes doc/performance.md with, per run:
-dofs, wall time, time per step split by phase (from the program's
-TimerOutput table), peak memory, and the floor measured in the same run (one
-displacement solve with everything reused) with the ratio step/floor.
+"""Runs the benchmark of the paper scene: vpcontact with each linear algebra
+back-end and solver path on 1 and 2 MPI ranks, and the DOLFINx peer
+(../shared/peer-dolfinx) on the same sizes, in one run on one machine; writes
+every run to a CSV file and the report (scripts/bench_report.py) from it.
 
-Usage: bench.py VPCONTACT [SIZE ...]   (from the repository root)"""
+Usage (from anywhere): bench.py VPCONTACT [SIZE ...] [options]; see --help.
+A benchmark reports figures: nothing here passes or fails."""
+import argparse
 import csv
+import datetime
+import glob
+import json
 import os
 import platform
 import re
+import shutil
+import statistics
 import subprocess
 import sys
+import time
 
-executable = sys.argv[1]
-sizes = [int(s) for s in sys.argv[2:]] or [64, 128, 256, 512]
-steps = 100
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import bench_report  # noqa: E402  (next to this file)
+
+PYTHON = "/usr/bin/python3"  # Debian's interpreter, the one with dolfinx
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
            OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
-def run(size, ranks, solver="CG with AMG", background=True):
-    tag = (f"{size}_{ranks}" + ("_cholesky" if solver == "Cholesky" else "")
-           + ("" if background else "_sequential"))
-    prm = f"/tmp/vpcontact_bench_{tag}.prm"
+def arguments():
+    p = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("executable", help="the vpcontact binary (build/vpcontact)")
+    p.add_argument("sizes", nargs="*", type=int,
+                   help="cells per side (default 128 256 512; --quick: 16 32)")
+    p.add_argument("--steps", type=int, default=None,
+                   help="time steps over T = 1 (default 100, --quick 10)")
+    p.add_argument("--rounds", type=int, default=1,
+                   help="run everything this many times, the sizes one after "
+                   "the other within a round; the report shows the median "
+                   "of each run (the machine's speed drifts between runs)")
+    p.add_argument("--quick", action="store_true",
+                   help="smoke test: sizes 16 32, 10 steps, report in "
+                   "/tmp/vpcontact_bench/performance.md unless --out is given")
+    p.add_argument("--out", help="report path (default doc/performance.md)")
+    p.add_argument("--csv", help="raw results (default figures/bench.csv "
+                   "next to the report)")
+    p.add_argument("--workdir", default="/tmp/vpcontact_bench",
+                   help="prm files, run folders, logs (default %(default)s)")
+    p.add_argument("--peer", default=os.path.join(
+        ROOT, "..", "shared", "peer-dolfinx", "peer.py"),
+        help="the peer's peer.py (default ../shared/peer-dolfinx/peer.py)")
+    p.add_argument("--no-peer", action="store_true", help="skip the peer")
+    p.add_argument("--floor", action="store_true", help="also set Output/"
+                   "Report solve floor where the binary has it (a solve "
+                   "after the timed part)")
+    a = p.parse_args()
+    a.sizes = a.sizes or ([16, 32] if a.quick else [128, 256, 512])
+    a.steps = a.steps or (10 if a.quick else 100)
+    a.out = a.out or ("/tmp/vpcontact_bench/performance.md" if a.quick
+                      else os.path.join(ROOT, "doc", "performance.md"))
+    a.csv = a.csv or os.path.join(os.path.dirname(os.path.abspath(a.out)),
+                                  "figures", "bench.csv")
+    a.executable = os.path.abspath(a.executable)
+    return a
+
+
+def parameters(executable):
+    """The entries of `vpcontact --print-parameters` as {"Section/Entry":
+    allowed values (a list for a Selection, else None)}: which back-ends,
+    solvers and switches this binary has (the Solver section changes while
+    the program is developed, and a prm with an unknown entry is refused)."""
+    text = run_retrying([executable, "--print-parameters"])[0]
+    entries, path, comments = {}, [], []
+    for line in text.splitlines():
+        s = line.strip()
+        if s.startswith("#"):
+            comments.append(s.lstrip("# "))
+        elif s.startswith("subsection "):
+            path.append(s[len("subsection "):])
+        elif s == "end" and path:
+            path.pop()
+        elif s.startswith("set "):
+            name = s[4:].split("=")[0].strip()
+            doc = " ".join(comments)
+            m = re.search(r"Allowed: \[Selection (.*?)\s*\]", doc)
+            entries["/".join(path + [name])] = (
+                [v.strip() for v in m.group(1).split("|")] if m else None)
+        if not s.startswith("#"):
+            comments = []
+    return entries
+
+
+def binary_stamp(executable):
+    """Modification times of the binary and its library: a change during a
+    run means it was relinked under it."""
+    files = [executable, os.path.join(os.path.dirname(executable),
+                                      "libvpcontact_lib.so")]
+    return tuple(os.stat(f).st_mtime if os.path.exists(f) else None
+                 for f in files)
+
+
+def run_retrying(command, executable=None, attempts=6):
+    """Runs a command; (stdout, stderr, return code, wall seconds). A failure
+    that looks like the binary being relinked (it changed or vanished, the
+    loader could not start it) is retried after a minute: the program is
+    rebuilt while benchmarks run."""
+    executable = executable or command[0]
+    for attempt in range(attempts):
+        before = binary_stamp(executable)
+        start = time.perf_counter()
+        try:
+            p = subprocess.run(command, capture_output=True, text=True, env=ENV)
+            out, err, rc = p.stdout, p.stderr, p.returncode
+        except OSError as e:  # binary missing or busy
+            out, err, rc = "", str(e), 127
+        wall = time.perf_counter() - start
+        relinked = (rc in (126, 127) or before != binary_stamp(executable)
+                    or before[0] is None or re.search(
+                        r"error while loading shared libraries|Text file busy|"
+                        r"cannot open shared object|Exec format error", err))
+        if rc == 0 or not relinked or attempt == attempts - 1:
+            return out, err, rc, wall
+        print("  the binary changed or could not start; retrying in 60 s",
+              flush=True)
+        time.sleep(60)
+
+
+# Phases of the TimerOutput table, grouped for the report: first matching
+# pattern (case-insensitive) wins; "Setup" (mesh, dofs, sparsity, once per
+# run) is out of the time per step. Names the program adds later go to
+# "other" in the report and stay whole in the CSV's phases column.
+PHASE_GROUPS = [("setup", r"^setup"), ("damage_solve", r"damage.*solve"),
+                ("damage_assembly", r"damage"),
+                ("preconditioner", r"preconditioner|factori|amg setup"),
+                ("assembly", r"assembl"), ("solve", r"solve"),
+                ("stress", r"stress"), ("output", r"output|postprocess")]
+PHASES = bench_report.PHASES  # the same names, in the CSV's order
+
+
+def timer_table(out):
+    """The TimerOutput table: total seconds and {phase: (calls, seconds,
+    damage (min, max) over ranks or None)}. Two layouts: the plain one
+    (rank 0's times) and deal.II's wall-time statistics over ranks (min with
+    rank, average, max with rank), where the max is what the run waits for."""
+    total = float(re.search(r"Total wallclock time elapsed(?: since start)?"
+                            r"\s+\|\s+([0-9.e+-]+)s", out).group(1))
+    phases = {}
+    name = r"\| ([A-Za-z0-9][A-Za-z0-9 ,.()/+_-]*?)\s+\|\s+(\d+) \|"
+    t = r"\s+([0-9.e+-]+)s"
+    for m in re.finditer(name + t + r" \|", out):
+        phases[m.group(1).strip()] = (int(m.group(2)), float(m.group(3)), None)
+    for m in re.finditer(name + t + r"\s+\d+ \|" + t + r" \|" + t +
+                         r"\s+\d+ \|", out):
+        phases[m.group(1).strip()] = (int(m.group(2)), float(m.group(5)),
+                                      (float(m.group(3)), float(m.group(5))))
+    return total, phases
+
+
+def launch(a, command, ranks, tag, finished):
+    """Runs a command under /usr/bin/time -v (for the peak memory of each
+    process), under mpirun for several ranks, and keeps its output in the
+    log folder; (stdout, the row's status, wall time, peak memory summed
+    over the ranks, log)."""
+    executable = command[0]
+    rss = os.path.join(a.workdir, "logs", tag + ".rss")
+    for f in glob.glob(rss + ".*"):
+        os.remove(f)
+    if os.path.exists("/usr/bin/time"):
+        # A file per rank: the ranks' stderr interleaves under mpirun.
+        command = ["sh", "-c", 'exec /usr/bin/time -v -o '
+                   '"$0.${OMPI_COMM_WORLD_RANK:-0}" "$@"', rss] + command
+    if ranks > 1:
+        # Binding each rank to a core is Open MPI's default; oversubscribe
+        # only where the machine has fewer cores than ranks.
+        command = (["mpirun", "-np", str(ranks)] +
+                   (["--oversubscribe"] if os.cpu_count() < ranks else [])
+                   + command)
+    out, err, rc, wall = run_retrying(command, executable)
+    log = os.path.join(a.workdir, "logs", tag + ".log")
+    with open(log, "w") as f:
+        f.write(" ".join(command) + "\n" + out + "\n--- stderr ---\n" + err)
+    # The reason of a failure: the first line naming an error, not
+    # mpirun's rules of dashes around it.
+    lines = [l.strip() for l in (err + out).splitlines()
+             if l.strip() and not set(l.strip()) <= set("-=*")]
+    status = "ok" if rc == 0 and finished(out) else "failed: " + next(
+        (l for l in lines if re.search(r"error|exception|abort", l, re.I)),
+        lines[-1] if lines else f"exit {rc}")[:120]
+    peaks = [int(k) / 1024 for f in glob.glob(rss + ".*") for k in
+             re.findall(r"Maximum resident set size \(kbytes\): (\d+)",
+                        open(f).read())]
+    return out, dict(status=status, process_wall_s=wall, log=log,
+                          mem_all_mb=sum(peaks) if peaks else "")
+
+
+def program_run(a, size, algebra, solver, ranks, has, tag):
+    """One run of vpcontact on the paper scene; a dict of the CSV's columns."""
+    folder = os.path.join(a.workdir, "runs", tag)
+    shutil.rmtree(folder, ignore_errors=True)
+    prm = os.path.join(a.workdir, tag + ".prm")
+    solver_section = f"  set Linear solver = {solver}\n"
+    if "Solver/Linear algebra" in has:
+        solver_section += f"  set Linear algebra = {algebra}\n"
+    floor = a.floor and "Output/Report solve floor" in has
     with open(prm, "w") as f:
-        f.write(open("prm/paper_fig1.prm").read())
-        f.write(f"""
-subsection Geometry
-  set Subdivisions = {size}, {size}
-end
-subsection Output
-  set Directory          = results/bench_{tag}
-  set Report solve floor = true
-end
-subsection Solver
-  set Linear solver       = {solver}
-  set Second thread       = {"true" if background else "false"}
-end
-""")
-    command = ([executable, prm] if ranks == 1 else
-               ["mpirun", "-np", str(ranks), "--oversubscribe", executable, prm])
-    out = subprocess.run(command, capture_output=True, text=True, env=env,
-                         check=True).stdout
-    matches = list(re.finditer(
-        r"\| ([A-Za-z -]+?)\s+\|\s+(\d+) \|\s+([0-9.e+-]+)s \|", out))
-    phases = {m.group(1).strip(): float(m.group(3)) for m in matches}
-    calls = {m.group(1).strip(): int(m.group(2)) for m in matches}
-    total = float(re.search(r"Total wallclock time elapsed since start\s+\|\s+"
-                            r"([0-9.e+-]+)s", out).group(1))
-    floor = re.search(r"one displacement solve takes ([0-9.e+-]+) s \("
-                      r"(\d+ CG iterations|solve with the factors), "
-                      r"(\d+) dofs", out)
-    kernels = re.search(r"one matrix-vector product ([0-9.e+-]+) ms, one "
-                        r"(?:preconditioner application|solve with the "
-                        r"factors) ([0-9.e+-]+) ms", out)
+        f.write(open(os.path.join(ROOT, "prm", "paper_fig1.prm")).read())
+        # The scene as in the file (fields every 10 steps); only the size,
+        # the step count over T = 1, the folder and the solver change.
+        f.write(f"\nsubsection Geometry\n  set Subdivisions = {size}, {size}\n"
+                f"end\nsubsection Time\n  set End time = 1\n"
+                f"  set Time step = {1 / a.steps!r}\nend\n"
+                f"subsection Output\n  set Directory = {folder}\n"
+                + ("  set Report solve floor = true\n" if floor else "")
+                + f"end\nsubsection Solver\n{solver_section}end\n")
+    out, row = launch(a, [a.executable, prm], ranks, tag,
+                           lambda out: "Total wallclock" in out)
+    if row["status"] != "ok":
+        return row
+    total, phases = timer_table(out)
+    groups = {g: 0. for g in PHASES + ["setup"]}
+    damage_ranks = None
+    for name, (calls, seconds, by_rank) in phases.items():
+        group = next((g for g, p in PHASE_GROUPS
+                      if re.search(p, name, re.I)), "other")
+        groups[group] += seconds
+        if group == "damage_solve" and by_rank:
+            damage_ranks = [x + y for x, y in zip(damage_ranks or (0, 0),
+                                                  by_rank)]
+    setup = groups["setup"]
+    dofs = re.search(r"mesh: \d+ cells, (\d+) dofs", out)
     memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
-    # The friction active-set iterations and the linear iterations of every
-    # step (CG iterations, or solves with the factors), from the run's
-    # statistics.csv, averaged over the steps.
-    with open(f"results/bench_{tag}/statistics.csv") as f:
-        rows = [r for r in csv.DictReader(f) if int(r["step"]) > 0]
-    active_set = sum(int(r["active_set_iterations"]) for r in rows) / len(rows)
-    linear = sum(int(r["linear_iterations"]) for r in rows) / len(rows)
-    if solver == "Cholesky" and not background:
-        solver = "Cholesky, one thread"
-    return dict(size=size, ranks=ranks, solver=solver, total=total,
-                phases=phases,
-                damage_solves=calls.get("Damage solve", 0) / steps,
-                floor=float(floor.group(1)),
-                floor_its=floor.group(2).split()[0] if "CG" in floor.group(2)
-                else "factors",
-                dofs=int(floor.group(3)),
-                matvec=float(kernels.group(1)), vcycle=float(kernels.group(2)),
-                memory=int(memory.group(1)) / 1024 if memory else float("nan"),
-                active_set=active_set, linear=linear)
+    floor_m = re.search(r"one displacement solve takes ([0-9.e+-]+) s", out)
+    row.update(dofs=int(dofs.group(1)) if dofs else "",
+               total_s=total, setup_s=setup,
+               per_step_ms=1000 * (total - setup) / a.steps,
+               mem_rank0_mb=int(memory.group(1)) / 1024 if memory else "",
+               floor_ms=1000 * float(floor_m.group(1)) if floor_m else "",
+               phases=";".join(f"{n}={c}x{s:.6g}"
+                               for n, (c, s, _) in sorted(phases.items())))
+    for g in PHASES:
+        row[g + "_ms"] = 1000 * groups[g] / a.steps
+    if damage_ranks:
+        row["damage_solve_min_ms"], row["damage_solve_max_ms"] = (
+            1000 * x / a.steps for x in damage_ranks)
+    try:  # iterations per step from statistics.csv (step 0: initial state)
+        with open(os.path.join(folder, "statistics.csv")) as f:
+            steps = [r for r in csv.DictReader(f) if int(r["step"]) > 0]
+        for column in ("linear", "active_set"):
+            row[column + "_its"] = statistics.mean(
+                int(r[column + "_iterations"]) for r in steps)
+    except (OSError, KeyError, ValueError, statistics.StatisticsError):
+        pass
+    shutil.rmtree(folder, ignore_errors=True)  # the fields: up to GBs
+    return row
 
 
-def bandwidth():
-    """Best of 5 of the triad rate of scripts/bandwidth.cc in GB/s: one copy
-    alone, and the sum over one copy per core run at the same time."""
-    binary = "/tmp/vpcontact_bandwidth"
-    subprocess.run(["g++", "-O2", "-o", binary, "scripts/bandwidth.cc"],
-                   check=True)
-    one, together = 0., 0.
-    for _ in range(5):
-        one = max(one, float(subprocess.run(
-            [binary], capture_output=True, text=True, check=True).stdout))
-        copies = [subprocess.Popen([binary], stdout=subprocess.PIPE, text=True)
-                  for _ in range(os.cpu_count())]
-        together = max(together, sum(float(p.communicate()[0])
-                                     for p in copies))
-    return one, together
+def peer_run(a, size, solver, ranks, tag):
+    """One run of the DOLFINx peer; its totals come from the .json it
+    writes next to --out (rank 0's timers)."""
+    csv_out = os.path.join(a.workdir, "runs", tag + ".csv")
+    command = [PYTHON, os.path.abspath(a.peer), "--n", str(size), "--steps",
+               str(a.steps), "--solver", solver, "--out", csv_out, "--quiet"]
+    summary = os.path.splitext(csv_out)[0] + ".json"
+    _, row = launch(a, command, ranks, tag,
+                           lambda out: os.path.exists(summary))
+    if row["status"] != "ok":
+        return row
+    s = json.load(open(summary))
+    n = a.steps
+    row.update(dofs=s["dofs_velocity"] + s["dofs_damage"],
+               total_s=s["t_total"], setup_s=s["t_setup"],
+               per_step_ms=1000 * s["t_loop"] / n,
+               assembly_ms=1000 * s["t_assembly_sum"] / n,
+               preconditioner_ms=1000 * s["t_vel_setup_sum"] / n,
+               solve_ms=1000 * s["t_vel_solve_sum"] / n,
+               damage_solve_ms=1000 * s["t_dmg_solve_sum"] / n,
+               other_ms=1000 * s["t_other_sum"] / n,
+               linear_its=s.get("vel_lin_its_mean", ""),
+               active_set_its=s.get("fric_iters_total", 0) / n)
+    os.remove(summary)
+    return row
 
 
-results = []
-for size in sizes:
-    results.append(run(size, 1))
-    print(f"{size}^2, 1 rank: {results[-1]['total']:.1f} s", flush=True)
-results.append(run(sizes[-1], 2))
-print(f"{sizes[-1]}^2, 2 ranks: {results[-1]['total']:.1f} s", flush=True)
-# The serial Cholesky factorization (Solver/Linear solver = Cholesky),
-# factorized once per run and reused by every step.
-# The machine's speed changes by 30-50 % from run to run (the same 512^2
-# run took 43 to 60 s within an hour), more than the growth per size that
-# the table is to show. So the Cholesky sizes run in several rounds, the
-# sizes one after the other within a round, and the table shows the median
-# run of each size; every run is listed below it.
-rounds = int(os.environ.get("VPCONTACT_BENCH_ROUNDS", "3"))
-cholesky_runs = {size: [] for size in sizes}
-for round_ in range(rounds):
-    for size in sizes:
-        cholesky_runs[size].append(run(size, 1, "Cholesky"))
-        print(f"{size}^2, 1 rank, Cholesky, round {round_ + 1}: "
-              f"{cholesky_runs[size][-1]['total']:.1f} s", flush=True)
+def machine():
+    """Where and on what the benchmark runs, stored in every CSV row."""
+    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo")
+                if l.startswith("model name")), platform.processor())
+    memory = next(int(l.split()[1]) for l in open("/proc/meminfo")
+                  if l.startswith("MemTotal"))
+    osname = next((l.split("=", 1)[1].strip().strip('"')
+                   for l in open("/etc/os-release")
+                   if l.startswith("PRETTY_NAME")), platform.platform())
+
+    def version(command):
+        r = subprocess.run(command, capture_output=True, text=True)
+        return r.stdout.strip() if r.returncode == 0 else ""
+    package = ["dpkg-query", "-W", "-f=${Version}"]
+    commit = version(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"])
+    if version(["git", "-C", ROOT, "status", "--porcelain", "--",
+                "source", "include", "CMakeLists.txt"]):
+        commit += " with local changes"
+    return dict(
+        date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), cpu=cpu,
+        cores=os.cpu_count(), memory_gb=round(memory / 2**20, 1), os=osname,
+        dealii=version(package + ["libdeal.ii-dev"]),
+        petsc=version(package + ["libpetsc-real-dev"]),
+        dolfinx=version([PYTHON, "-c",
+                         "import dolfinx; print(dolfinx.__version__)"]),
+        commit=commit)
 
 
-def per_step_total(r):
-    return sum(r["phases"].values()) - r["phases"].get("Setup", 0)
+def plan(a, has):
+    """The runs of one round per size: (code, back-end, solver, path, ranks,
+    reason to skip or None). The direct path is CHOLMOD Cholesky where
+    Trilinos runs serial and MUMPS otherwise; the AMG path is CG with AMG
+    (the peer: CG with PETSc GAMG)."""
+    algebras = has.get("Solver/Linear algebra") or ["Trilinos"]
+    solvers = has.get("Solver/Linear solver") or []
+    runs = []
+    for algebra in ("Trilinos", "PETSc"):
+        for path, ranks, solver in (
+                ("direct", 1, "Cholesky" if algebra == "Trilinos" else "MUMPS"),
+                ("direct", 2, "MUMPS"), ("AMG", 1, "CG with AMG"),
+                ("AMG", 2, "CG with AMG")):
+            skip = None
+            if algebra not in algebras:
+                skip = ("this vpcontact has no Solver/Linear algebra = "
+                        f"{algebra} (--print-parameters)")
+            elif solver not in solvers:
+                skip = f"this vpcontact has no Solver/Linear solver = {solver}"
+            runs.append(("vpcontact", algebra, solver, path, ranks, skip))
+    peer_skip = ("--no-peer" if a.no_peer else f"no {a.peer}"
+                 if not os.path.exists(a.peer) else None)
+    if not peer_skip and subprocess.run([PYTHON, "-c", "import dolfinx"],
+                                        capture_output=True).returncode:
+        peer_skip = f"{PYTHON} cannot import dolfinx"
+    for solver, path, ranks in (("lu", "direct", 1), ("gamg", "AMG", 1),
+                                ("gamg", "AMG", 2)):
+        runs.append(("peer", "DOLFINx/PETSc", solver, path, ranks, peer_skip))
+    return runs
 
 
-cholesky = [sorted(cholesky_runs[size], key=per_step_total)[rounds // 2]
-            for size in sizes]
-# The same in one thread (Solver/Second thread = false: the solves with the
-# factors after the damage step instead of beside it, the passes over the
-# cells in one piece), at the largest size.
-sequential = run(sizes[-1], 1, "Cholesky", background=False)
-print(f"{sizes[-1]}^2, 1 rank, Cholesky, one thread: {sequential['total']:.1f} s",
-      flush=True)
-bandwidth_one, bandwidth_all = bandwidth()
+def main():
+    a = arguments()
+    for d in ("runs", "logs"):
+        os.makedirs(os.path.join(a.workdir, d), exist_ok=True)
+    has = parameters(a.executable)
+    if not has:
+        sys.exit(f"{a.executable} --print-parameters printed no entries")
+    info = machine()
+    runs = plan(a, has)
+    for code, algebra, solver, _, ranks, skip in filter(lambda r: r[5], runs):
+        print(f"note: skipping {code} {algebra} {solver} on {ranks} rank(s):"
+              f" {skip}", flush=True)
+    if any(r[0] == "peer" and not r[5] for r in runs):
+        # The peer compiles its forms on its first run (seconds, cached in
+        # ~/.cache/fenics); a tiny run first keeps that out of the timings.
+        for solver in ("lu", "gamg"):
+            subprocess.run([PYTHON, a.peer, "--n", "4", "--steps", "2",
+                            "--solver", solver, "--quiet"], env=ENV,
+                           capture_output=True)
+    rows = []
+    for round_ in range(1, a.rounds + 1):
+        for size in a.sizes:
+            for code, algebra, solver, path, ranks, skip in runs:
+                row = dict(info, round=round_, size=size, steps=a.steps,
+                           code=code, algebra=algebra, solver=solver,
+                           path=path, ranks=ranks)
+                tag = re.sub(r"[^A-Za-z0-9]+", "_", f"{code}_{algebra}_"
+                             f"{solver}_{size}_{ranks}_r{round_}")
+                if skip:
+                    if round_ == 1 and size == a.sizes[0]:
+                        rows.append(dict(row, status="skipped: " + skip))
+                    continue
+                row.update(program_run(a, size, algebra, solver, ranks, has,
+                                       tag) if code == "vpcontact" else
+                           peer_run(a, size, solver, ranks, tag))
+                rows.append(row)
+                shown = (f"{row['total_s']:.2f} s, {row['per_step_ms']:.1f}"
+                         " ms per step" if row["status"] == "ok"
+                         else row["status"] + f" (log {row['log']})")
+                print(f"{size}^2, {ranks} rank(s), {code} {algebra} {solver}"
+                      f", round {round_}: {shown}", flush=True)
+                # Written after every run, so that an interrupted benchmark
+                # keeps what it measured (bench_report.py can report it).
+                bench_report.write_csv(a.csv, rows)
+    bench_report.write_csv(a.csv, rows)  # also where every run was skipped
+    bench_report.write_report(a.out, a.csv, rows)
+    print(f"wrote {a.csv} and {a.out}")
 
-groups = [("displacement: assembly", ["Assemble right-hand side",
-                                      "Assemble residual", "Assemble matrix"]),
-          ("displacement: AMG setup or factorization",
-           ["Build preconditioner"]),
-          ("displacement: solve", ["Solve"]),
-          ("stress update", ["Stress update"]),
-          ("damage: assembly", ["Damage assembly"]),
-          ("damage: solve", ["Damage solve"]),
-          ("output", ["Postprocess and output"])]
-with open("doc/performance.md", "w") as out:
-    out.write(f"""# Performance
 
-Measured by `scripts/bench` (this page is its output) on this machine:
-{platform.processor() or platform.machine()}, {os.cpu_count()} cores,
-Debian 12, deal.II 9.4 release build, Trilinos ML AMG. The scene is
-`prm/paper_fig1.prm` (friction, damage, paper's law, fields written every 10
-steps) with N x N cells and 100 steps, with the default solver of the
-displacement system (CG with AMG) and, in the last rows, with `Solver/Linear
-solver = Cholesky` (a supernodal factorization by SuiteSparse CHOLMOD
-with OpenBLAS in two BLAS threads; the substitutions the program's own, in
-one thread). A serial
-run uses the machine's second core (`Solver/Second thread`, default true):
-the passes over the cells work on two halves of the cells at once, and the
-solves with the factors run beside the damage step; "Cholesky, one thread"
-is the largest size with `Second thread = false`. On 2 ranks each rank is
-bound to one core and uses one thread. The
-**floor** is measured at the end of the same run: one solve of the
-displacement system with the matrix and its AMG or factors as they are and
-the last right-hand side, from a zero start vector (CG iterations in
-brackets; for Cholesky one forward and one backward substitution). Times per
-step are wall-clock milliseconds averaged over the 100 steps; the AMG setup
-or the factorization (once per run, since the stick set does not change) is
-in them, spread over the 100 steps; the mesh and dof setup is in the total
-only. Where the solves with the factors run beside the damage step,
-"displacement: solve" is the time the damage step did not hide.
-The iterations per step are averages over the 100 steps of the columns
-`active_set_iterations` and `linear_iterations` of the run's
-`statistics.csv`: the stick/slip iterations of the friction solve, and
-the CG iterations summed over them (with Cholesky, the solves with the
-factors).
-
-| cells | ranks | solver | dofs | total [s] | per step [ms] | floor [ms] | step / floor | """ +
-              " | ".join(g for g, _ in groups) + """ | friction active-set iterations per step | displacement linear iterations per step | damage solves per step | peak memory rank 0 [MB] |
-|---|---|---|---|---|---|---|---|""" + "---|" * len(groups) + "---|---|---|---|\n")
-    for r in results + cholesky + [sequential]:
-        per_step = 1000 * sum(v for k, v in r["phases"].items()
-                              if k not in ("Setup",)) / steps
-        cells = [1000 * sum(r["phases"].get(k, 0) for k in keys) / steps
-                 for _, keys in groups]
-        solver = "CG + AMG" if r["solver"] == "CG with AMG" else r["solver"]
-        out.write(f"| {r['size']}^2 | {r['ranks']} | {solver} | {r['dofs']} | "
-                  f"{r['total']:.1f} | {per_step:.1f} | "
-                  f"{1000 * r['floor']:.1f} ({r['floor_its']}) | "
-                  f"{per_step / (1000 * r['floor']):.2f} | " +
-                  " | ".join(f"{c:.1f}" for c in cells) +
-                  f" | {r['active_set']:.2f} | {r['linear']:.1f}"
-                  f" | {r['damage_solves']:.1f} | {r['memory']:.0f} |\n")
-    serial = [r for r in results if r["ranks"] == 1]
-    for name, runs in (("CG + AMG", serial), ("Cholesky", cholesky)):
-        out.write(f"\nGrowth of the time per step per 4x dofs, {name}: ")
-        out.write(", ".join(
-            f"{a['size']}^2 -> {b['size']}^2: x "
-            f"{per_step_total(b) / per_step_total(a):.2f}"
-            for a, b in zip(runs, runs[1:])) + ".\n")
-    out.write(f"\nCholesky, every run ({rounds} rounds, the median in the "
-              "table), time per step in ms: " + "; ".join(
-                  f"{size}^2: " + ", ".join(
-                      f"{1000 * per_step_total(r) / steps:.1f}"
-                      for r in cholesky_runs[size]) for size in sizes)
-              + ". Growth per 4x dofs within each round: " + "; ".join(
-                  f"{a}^2 -> {b}^2: " + ", ".join(
-                      f"x {per_step_total(rb) / per_step_total(ra):.2f}"
-                      for ra, rb in zip(cholesky_runs[a], cholesky_runs[b]))
-                  for a, b in zip(sizes, sizes[1:])) + ".\n")
-    big1 = serial[-1]
-    big2 = results[-1]
-    out.write(f"\nStrong scaling at {big2['size']}^2: 1 rank {big1['total']:.1f} s, "
-              f"2 ranks {big2['total']:.1f} s, speed-up "
-              f"{big1['total'] / big2['total']:.2f}. Per phase, 1 rank against "
-              "2: " + ", ".join(
-                  f"{g} x {sum(big1['phases'].get(k, 0) for k in keys) / max(1e-9, sum(big2['phases'].get(k, 0) for k in keys)):.2f}"
-                  for g, keys in groups) + ". The kernels of the solve, "
-              f"timed at the end of the run: one matrix-vector product "
-              f"{big1['matvec']:.2f} ms against {big2['matvec']:.2f} ms (x "
-              f"{big1['matvec'] / big2['matvec']:.2f}), one AMG V-cycle "
-              f"{big1['vcycle']:.2f} ms against {big2['vcycle']:.2f} ms (x "
-              f"{big1['vcycle'] / big2['vcycle']:.2f}).\n")
-    out.write(f"\nMemory bandwidth (`scripts/bandwidth.cc`, STREAM triad on "
-              f"3 x 64 MB, best of 5): one process alone "
-              f"{bandwidth_one:.1f} GB/s, {os.cpu_count()} processes at "
-              f"the same time {bandwidth_all:.1f} GB/s together, x "
-              f"{bandwidth_all / bandwidth_one:.2f}.\n")
-    out.write(open("doc/performance_notes.md").read())
-print("wrote doc/performance.md")
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,325 @@
+#!/usr/bin/python3
+"""Writes doc/performance.md from the raw results of scripts/bench.py (one
+CSV row per run), so that the page can be regenerated from the data alone.
+
+Usage: bench_report.py [CSV [REPORT]]  (defaults doc/figures/bench.csv and
+doc/performance.md). The page reports figures without judging them."""
+import csv
+import math
+import os
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# The groups of phases of a step (ms per step), as bench.py forms them from
+# the program's timer table and the peer's totals, and their titles.
+PHASES = ["damage_solve", "damage_assembly", "preconditioner", "assembly",
+          "solve", "stress", "output", "other"]
+PHASE_TITLES = [("assembly", "assembly"),
+                ("preconditioner", "AMG setup or factorization"),
+                ("solve", "displacement solve"), ("stress", "stress update"),
+                ("damage_assembly", "damage assembly"),
+                ("damage_solve", "damage solve"), ("output", "output"),
+                ("other", "other")]
+MACHINE = ["date", "cpu", "cores", "memory_gb", "os", "dealii", "petsc",
+           "dolfinx", "commit"]
+COLUMNS = (["round", "size", "steps", "code", "algebra", "solver", "path",
+            "ranks", "status", "dofs", "total_s", "setup_s", "per_step_ms"]
+           + [p + "_ms" for p in PHASES]
+           + ["damage_solve_min_ms", "damage_solve_max_ms", "mem_rank0_mb",
+              "mem_all_mb", "process_wall_s", "linear_its", "active_set_its",
+              "floor_ms", "phases", "log"] + MACHINE)
+
+
+def write_csv(path, rows):
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, COLUMNS, extrasaction="ignore")
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v)
+                        for k, v in r.items()})
+
+
+def read_csv(path):
+    """The rows with numbers as numbers (an empty cell stays '')."""
+    rows = []
+    for r in csv.DictReader(open(path)):
+        for k, v in r.items():
+            if k in MACHINE or k in ("phases", "log", "status", "code",
+                                     "algebra", "solver", "path"):
+                continue
+            try:
+                r[k] = float(v) if "." in v or "e" in v else int(v)
+            except ValueError:
+                pass
+        rows.append(r)
+    return rows
+
+
+def fmt(x):
+    """A figure to three significant digits (all of its whole part); '–'
+    where there is none."""
+    if x in ("", None) or (isinstance(x, float) and math.isnan(x)):
+        return "–"
+    return f"{x:.0f}" if abs(x) >= 100 else f"{x:.3g}"
+
+
+def name(r):
+    solver = {"CG with AMG": "CG + AMG", "lu": "MUMPS LU",
+              "gamg": "CG + GAMG"}.get(r["solver"], r["solver"])
+    return (f"vpcontact {r['algebra']}, {solver}" if r["code"] == "vpcontact"
+            else f"DOLFINx peer, {solver}")
+
+
+def short(r):
+    """The solver part of the run's name."""
+    return name(r).split(", ")[1]
+
+
+def order(r):
+    """vpcontact before the peer, Trilinos before PETSc, direct before AMG."""
+    return (r["code"] != "vpcontact", r["algebra"] != "Trilinos",
+            r["path"] != "direct")
+
+
+def key(r):
+    return (r["code"], r["algebra"], r["solver"], int(r["ranks"]))
+
+
+def medians(rows):
+    """{(size, key): the run with the median total time over the rounds}."""
+    runs = {}
+    for r in rows:
+        if r["status"] == "ok":
+            runs.setdefault((int(r["size"]), key(r)), []).append(r)
+    return {k: sorted(v, key=lambda r: r["total_s"])[len(v) // 2]
+            for k, v in runs.items()}
+
+
+def ratio(a, b):
+    return a / b if a not in ("", None) and b not in ("", None, 0) else ""
+
+
+def pair(run_a, run_b):
+    """'total ratio (per-step ratio)' of two runs, or '–'."""
+    if not run_a or not run_b:
+        return "–"
+    return (f"{fmt(ratio(run_a['total_s'], run_b['total_s']))} "
+            f"({fmt(ratio(run_a['per_step_ms'], run_b['per_step_ms']))})")
+
+
+def damage(r):
+    """The damage solves per step: the slowest rank where the program gives
+    them by rank, else rank 0's."""
+    return r.get("damage_solve_max_ms") or r.get("damage_solve_ms", "")
+
+
+def cost_table(best):
+    lines = ["| cells | ranks | run | dofs | total [s] | per step [ms] | " +
+             " | ".join(t for _, t in PHASE_TITLES) +
+             " | memory rank 0 [MB] | memory all ranks [MB] |",
+             "|" + "---|" * (8 + len(PHASE_TITLES))]
+    for (size, k), r in sorted(best.items(), key=lambda i: (
+            i[0][0], i[0][1][3], order(i[1]))):
+        cells = [fmt(r.get(p + "_ms")) for p, _ in PHASE_TITLES]
+        if r.get("damage_solve_min_ms") not in ("", None):  # by rank
+            cells[PHASE_TITLES.index(("damage_solve", "damage solve"))] = (
+                f"{fmt(r['damage_solve_min_ms'])}–"
+                f"{fmt(r['damage_solve_max_ms'])}")
+        lines.append(f"| {size}² | {k[3]} | {name(r)} | {r['dofs']} | "
+                     f"{fmt(r['total_s'])} | {fmt(r['per_step_ms'])} | " +
+                     " | ".join(cells) + f" | {fmt(r.get('mem_rank0_mb', ''))}"
+                     f" | {fmt(r.get('mem_all_mb', ''))} |")
+    return lines
+
+
+def ratio_table(best, sizes, algebras):
+    lines = ["| cells | vpcontact back-end | best serial: vpcontact / peer | "
+             "AMG 1 rank / peer GAMG 1 rank | AMG 2 ranks / peer GAMG 2 "
+             "ranks | peak memory, AMG 1 rank: vpcontact / peer | peak "
+             "memory, AMG 2 ranks: vpcontact / peer | vpcontact AMG "
+             "speed-up 1 → 2 ranks | its damage solves 1 → 2 ranks | peer "
+             "GAMG speed-up 1 → 2 ranks |", "|" + "---|" * 10]
+    peer = "DOLFINx/PETSc"
+    for size in sizes:
+        def get(code, algebra, solver, ranks):
+            return best.get((size, (code, algebra, solver, ranks)))
+        serial_peer = [r for (s, k), r in best.items()
+                       if s == size and k[0] == "peer" and k[3] == 1]
+        best_peer = min(serial_peer, key=lambda r: r["total_s"], default=None)
+        g1, g2 = get("peer", peer, "gamg", 1), get("peer", peer, "gamg", 2)
+        for algebra in algebras:
+            serial = [r for (s, k), r in best.items() if s == size and
+                      k[0] == "vpcontact" and k[1] == algebra and k[3] == 1]
+            if not serial:
+                continue
+            fastest = min(serial, key=lambda r: r["total_s"])
+            a1 = get("vpcontact", algebra, "CG with AMG", 1)
+            a2 = get("vpcontact", algebra, "CG with AMG", 2)
+            memory = [fmt(ratio(a["mem_all_mb"], g["mem_all_mb"]))
+                      if a and g else "–" for a, g in ((a1, g1), (a2, g2))]
+            lines.append(
+                f"| {size}² | {algebra} | {pair(fastest, best_peer)}"
+                + (f": {short(fastest)} / {short(best_peer)}" if best_peer
+                   else "") + " | "
+                f"{pair(a1, g1)} | {pair(a2, g2)} | {memory[0]} | {memory[1]}"
+                f" | {pair(a1, a2)} | "
+                f"{fmt(ratio(damage(a1), damage(a2))) if a1 and a2 else '–'}"
+                f" | {pair(g1, g2)} |")
+    return lines
+
+
+def growth_table(best, sizes):
+    """Time per step growth per 4x unknowns, (t_b / t_a)^(ln 4 / ln(n_b /
+    n_a)): 4 where the cost grows like the unknowns."""
+    pairs = list(zip(sizes, sizes[1:]))
+    if len(sizes) > 2:
+        pairs.append((sizes[0], sizes[-1]))
+    lines = ["| run | ranks | " + " | ".join(
+        f"{a}² → {b}²" for a, b in pairs) + " |",
+        "|---|---|" + "---|" * len(pairs)]
+    any_run = {k: r for (_, k), r in best.items()}
+    keys = sorted(any_run, key=lambda k: (order(any_run[k]), k[3]))
+    for k in keys:
+        cells = []
+        for a, b in pairs:
+            ra, rb = best.get((a, k)), best.get((b, k))
+            cells.append(fmt((rb["per_step_ms"] / ra["per_step_ms"]) ** (
+                math.log(4) / math.log(rb["dofs"] / ra["dofs"])))
+                if ra and rb else "–")
+        lines.append(f"| {name(any_run[k])} | {k[3]} | " + " | ".join(cells)
+                     + " |")
+    return lines
+
+
+def advice(best, sizes):
+    """Per size: the fastest run on 1 and on 2 ranks and the one with the
+    least memory, among the program's."""
+    lines = []
+    for size in sizes:
+        mine = [r for (s, k), r in best.items() if s == size
+                and k[0] == "vpcontact"]
+        if not mine:
+            continue
+        parts = []
+        for ranks in (1, 2):
+            rs = [r for r in mine if int(r["ranks"]) == ranks]
+            if rs:
+                r = min(rs, key=lambda r: r["total_s"])
+                parts.append(f"fastest on {ranks} rank{'s' * (ranks > 1)}: "
+                             f"{name(r)[10:]} ({fmt(r['total_s'])} s)")
+        withmem = [r for r in mine if r.get("mem_all_mb") != ""]
+        if withmem:
+            r = min(withmem, key=lambda r: r["mem_all_mb"])
+            parts.append(f"least memory: {name(r)[10:]} on {r['ranks']} "
+                         f"rank{'s' * (int(r['ranks']) > 1)} "
+                         f"({fmt(r['mem_all_mb'])} MB)")
+        lines.append(f"* {size}²: " + "; ".join(parts) + ".")
+    return lines
+
+
+def write_report(out, csv_path, rows):
+    ok = [r for r in rows if r["status"] == "ok"] or rows
+    m = ok[0]
+    best = medians(rows)
+    sizes = sorted({int(r["size"]) for r in rows})
+    steps = int(m["steps"])
+    rounds = max(int(r["round"]) for r in rows)
+    algebras = [a for a in ("Trilinos", "PETSc")
+                if any(k[1] == a for _, k in best)]
+    minutes = sum(r.get("process_wall_s") or 0 for r in rows) / 60
+    csv_link = os.path.relpath(os.path.abspath(csv_path),
+                               os.path.dirname(os.path.abspath(out)))
+    text = [
+        "# Performance", "",
+        "What the displacement solvers of vpcontact cost on the paper scene "
+        "on 1 and 2 MPI ranks, next to an independent DOLFINx implementation "
+        "of the same scheme (the peer), all measured in one run of "
+        "`scripts/bench` on one machine. This page is that script's output; "
+        f"the raw figures are in [{csv_link}]({csv_link}).", "",
+        "## Machine and runs", "",
+        f"* {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB, {m['os']}; "
+        f"deal.II {m['dealii']}, PETSc {m['petsc'] or '–'}, DOLFINx "
+        f"{m['dolfinx'] or '–'}; vpcontact at commit {m['commit']}; "
+        f"measured {m['date']}.",
+        f"* Scene: `prm/paper_fig1.prm` (Tresca friction, gradient damage, "
+        f"the paper's law) on N x N cells, {steps} steps over T = 1; "
+        "vpcontact writes the fields every 10 steps (column *output*), the "
+        "peer writes none.",
+        "* vpcontact: `Solver/Linear algebra` = Trilinos or PETSc; the "
+        "direct path is `Solver/Linear solver = Cholesky` (CHOLMOD, one "
+        "process, Trilinos) or `MUMPS`, the AMG path `CG with AMG`. 2 ranks "
+        "are `mpirun -np 2`, one core each.",
+        "* Peer: `peer.py --solver lu` (MUMPS LU, factorized once) and "
+        "`--solver gamg` (CG + PETSc GAMG), after a warm-up run that "
+        "compiles its forms.",
+        "* *total*: the run's own clock from start to end (vpcontact's "
+        "timer table, the peer's `t_total`). *per step*: (total − mesh and "
+        "dof set-up) / steps, split by phase in ms per step (rank 0's "
+        "timers; the damage solve as min–max over the ranks where the "
+        "program reports it by rank). The peer's timers split less "
+        "finely: its *assembly* is all its assembly, its *other* holds "
+        "the stress update. *memory*: peak resident set, rank 0 "
+        "as vpcontact prints it, and summed over the ranks from "
+        "`/usr/bin/time -v`.",
+        f"* Each run is the median of {rounds} round"
+        f"{'s' * (rounds > 1)} by total time." if rounds > 1 else
+        "* One round: the machine's speed can drift by tens of per cent "
+        "between runs; `--rounds 3` reports medians.", "",
+        "## What each solver costs", "",
+    ] + cost_table(best) + [
+        "", "## Which to pick", "",
+    ] + advice(best, sizes) + [
+        "* `Cholesky` runs on one process only; `MUMPS` is the direct "
+        "solver on several ranks. Both factorize once per stick set and "
+        "reuse the factors in every step.",
+        "* `CG with AMG` stores no factors; it is the solver meant for "
+        "meshes finer than those above and for more ranks.", "",
+        "## Against the peer", "",
+        "Ratios of wall time, total (per step in brackets); below 1 "
+        "vpcontact takes less. Memory: summed over the ranks.", "",
+    ] + ratio_table(best, sizes, algebras) + [
+        "", "## Growth with the mesh", "",
+        "Factor by which the time per step grows per 4x unknowns "
+        "(4 where it grows like the unknowns).", "",
+    ] + growth_table(best, sizes)
+    # One line per reason, listing the runs it concerns.
+    reasons = {}
+    for r in rows:
+        if r["status"] != "ok":
+            reasons.setdefault(r["status"], []).append(
+                f"{name(r)} on {r['ranks']} rank{'s' * (int(r['ranks']) > 1)}"
+                + ("" if r["status"].startswith("skipped") else
+                   f" at {r['size']}² (round {r['round']})"))
+    notes = [f"* {'; '.join(runs)}: {status}"
+             for status, runs in reasons.items()]
+    if notes:
+        text += ["", "## Runs not in the tables", ""] + notes
+    text += [
+        "", "## Regenerating", "",
+        "`scripts/bench [SIZES]` (default 128 256 512) runs everything "
+        f"(this set took {fmt(minutes)} minutes) and rewrites this page and "
+        f"`{csv_link}`. Options: `--steps N` (default 100), `--rounds R`, "
+        "`--no-peer`, `--out FILE` (the page; the CSV goes to "
+        "figures/bench.csv beside it), `--quick` (16² and 32², 10 steps, "
+        "into /tmp/vpcontact_bench). `scripts/bench_report.py CSV PAGE` "
+        "rewrites the page from the CSV alone. Run it with nothing else "
+        "busy on the machine."]
+    with open(out, "w") as f:
+        f.write("\n".join(text) + "\n")
+    if len(text) > 150:
+        print(f"note: {out} has {len(text)} lines")
+
+
+def main():
+    csv_path = (sys.argv[1] if len(sys.argv) > 1 else
+                os.path.join(ROOT, "doc", "figures", "bench.csv"))
+    out = (sys.argv[2] if len(sys.argv) > 2 else
+           os.path.join(ROOT, "doc", "performance.md"))
+    write_report(out, csv_path, read_csv(csv_path))
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
