@@ -445,6 +445,10 @@ namespace VPContact
       {
         pcout << " (folder " << output_writer.directory() << ")" << std::endl;
         computing_timer.print_summary();
+        // On several ranks, each phase's time on the slowest and the
+        // fastest rank: how evenly the work is spread.
+        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+          computing_timer.print_wall_time_statistics(mpi_communicator);
         // Peak resident memory of this rank (VmHWM), for the benchmarks.
         std::ifstream status("/proc/self/status");
         for (std::string line; std::getline(status, line);)

@@ -195,7 +195,10 @@ namespace VPContact
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     std::vector<types::global_dof_index>                 &indices) const
   {
-    std::vector<types::global_dof_index> all(fe.n_dofs_per_cell());
+    // Called for every cell in every step, from several threads: each
+    // thread keeps its own vector instead of allocating one per call.
+    thread_local std::vector<types::global_dof_index> all;
+    all.resize(fe.n_dofs_per_cell());
     cell->get_dof_indices(all);
     indices.resize(displacement_shape_functions.size());
     for (unsigned int i = 0; i < indices.size(); ++i)
