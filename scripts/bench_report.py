@@ -248,9 +248,13 @@ def write_report(out, csv_path, rows):
         "vpcontact writes the fields every 10 steps (column *output*), the "
         "peer writes none.",
         "* vpcontact: `Solver/Linear algebra` = Trilinos or PETSc; the "
-        "direct path is `Solver/Linear solver = Cholesky` (CHOLMOD, one "
-        "process, Trilinos) or `MUMPS`, the AMG path `CG with AMG`. 2 ranks "
-        "are `mpirun -np 2`, one core each.",
+        "direct path is `Solver/Linear solver = Cholesky` (CHOLMOD through "
+        "PETSc's interface, one process; run with the Trilinos package) or "
+        "`MUMPS`, the AMG path `CG with AMG` (ML or GAMG, the rigid motions "
+        "as near null space). The damage solves use incomplete Cholesky "
+        "(Ifpack, masked; PETSc ICC on the free rows). 2 ranks are "
+        "`mpirun -np 2`, one core each; 1 rank uses deal.II's threads on "
+        "both cores.",
         "* Peer: `peer.py --solver lu` (MUMPS LU, factorized once) and "
         "`--solver gamg` (CG + PETSc GAMG), after a warm-up run that "
         "compiles its forms.",

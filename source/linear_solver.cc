@@ -150,14 +150,6 @@ namespace VPContact
 
 
 
-  LinearAlgebra
-  LinearSolver::package() const
-  {
-    return linear_algebra;
-  }
-
-
-
   bool
   LinearSolver::is_direct() const
   {

@@ -73,16 +73,9 @@ namespace VPContact
           }
         else
           {
-            make_inner_preconditioner(near_null_space);
-            make_masked_operators();
-            VPContactPetsc(KSPSetOperators(ksp, masked_matrix, A));
-            VPContactPetsc(KSPSetType(ksp, KSPCG));
-            VPContactPetsc(PCSetType(pc, PCSHELL));
-            VPContactPetsc(PCShellSetContext(pc, this));
-            VPContactPetsc(PCShellSetApply(pc, &apply_masked_preconditioner));
-            // The test of deal.II's SolverControl: |b - A x| <= tolerance.
-            VPContactPetsc(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED));
-            VPContactPetsc(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE));
+            set_near_null_space(near_null_space);
+            VPContactPetsc(KSPSetOperators(ksp, A, A));
+            configure_cg(ksp);
           }
         const PetscErrorCode error = KSPSetUp(ksp);
         AssertThrow(
@@ -104,9 +97,8 @@ namespace VPContact
             const std::vector<unsigned int>     &held_rows) override
       {
         Assert(held_rows.empty() || !is_direct(), ExcNotImplemented());
-        if (!held_rows.empty() && method == SpdMethod::cg_incomplete_cholesky)
+        if (!held_rows.empty())
           return solve_on_free_rows(solution, rhs, control, held_rows);
-        held = &held_rows;
         copy_to(rhs, b);
         copy_to(solution, x);
         if (!is_direct())
@@ -116,7 +108,6 @@ namespace VPContact
                                           no_divergence_test,
                                           control.max_steps()));
         VPContactPetsc(KSPSolve(ksp, b, x));
-        held                          = &no_rows;
         const unsigned int iterations = finished(ksp);
         copy_from(x, solution);
         return is_direct() ? 1 : iterations;
@@ -127,10 +118,9 @@ namespace VPContact
                    const TrilinosWrappers::MPI::Vector &src) override
       {
         copy_to(src, b);
-        if (is_direct())
-          VPContactPetsc(KSPSolve(ksp, b, x));
-        else
-          VPContactPetsc(PCApply(inner, b, x));
+        PC pc;
+        VPContactPetsc(KSPGetPC(ksp, &pc));
+        VPContactPetsc(PCApply(pc, b, x));
         copy_from(x, dst);
       }
 
@@ -144,9 +134,9 @@ namespace VPContact
     private:
       /**
        * K_FF x_F = b_F on the free rows alone: their submatrix
-       * (MatCreateSubMatrix) with its own block Jacobi / ICC, built for
-       * each held set. Where most rows are held, as in the damage solves,
-       * whose free nodes are those near the damaged zone, a solve costs in
+       * (MatCreateSubMatrix) with its own preconditioner, built for each
+       * held set. Where most rows are held, as in the damage solves, whose
+       * free nodes are those near the damaged zone, a solve costs in
        * proportion to the free rows.
        */
       unsigned int
@@ -167,7 +157,6 @@ namespace VPContact
         IS  rows;
         Mat sub;
         KSP sub_ksp;
-        PC  sub_pc;
         VPContactPetsc(ISCreateGeneral(communicator,
                                        free_rows.size(),
                                        free_rows.data(),
@@ -177,13 +166,7 @@ namespace VPContact
           MatCreateSubMatrix(A, rows, rows, MAT_INITIAL_MATRIX, &sub));
         VPContactPetsc(KSPCreate(communicator, &sub_ksp));
         VPContactPetsc(KSPSetOperators(sub_ksp, sub, sub));
-        VPContactPetsc(KSPSetType(sub_ksp, KSPCG));
-        VPContactPetsc(KSPGetPC(sub_ksp, &sub_pc));
-        VPContactPetsc(PCSetType(sub_pc, PCBJACOBI));
-        VPContactPetsc(KSPSetOptionsPrefix(sub_ksp, "vpcontact_"));
-        VPContactPetsc(KSPSetFromOptions(sub_ksp));
-        VPContactPetsc(KSPSetNormType(sub_ksp, KSP_NORM_UNPRECONDITIONED));
-        VPContactPetsc(KSPSetInitialGuessNonzero(sub_ksp, PETSC_TRUE));
+        configure_cg(sub_ksp);
         VPContactPetsc(KSPSetTolerances(sub_ksp,
                                         0.,
                                         control.tolerance(),
@@ -278,30 +261,25 @@ namespace VPContact
       }
 
       /**
-       * GAMG with the near null space (orthonormalised, as PETSc requires),
-       * or block Jacobi with an incomplete Cholesky factorization of each
-       * rank's block. Options with the prefix "vpcontact_" given to PETSc
-       * (PETSC_OPTIONS) reach it.
+       * CG with GAMG or block Jacobi with ICC on each rank's block, stopped
+       * as deal.II's SolverControl stops (|b - A x| <= its tolerance), from
+       * the given start vector. Options prefixed "vpcontact_" in
+       * PETSC_OPTIONS reach it.
        */
       void
-      make_inner_preconditioner(const NearNullSpace &near_null_space)
+      configure_cg(KSP solver) const
       {
-        VPContactPetsc(PCCreate(communicator, &inner));
-        VPContactPetsc(PCSetOperators(inner, A, A));
-        VPContactPetsc(PCSetOptionsPrefix(inner, "vpcontact_"));
-        if (method == SpdMethod::cg_amg)
-          {
-            VPContactPetsc(PCSetType(inner, PCGAMG));
-            set_near_null_space(near_null_space);
-          }
-        else
-          {
-            VPContactPetsc(PCSetType(inner, PCBJACOBI));
-            VPContactPetsc(
-              PetscOptionsSetValue(nullptr, "-vpcontact_sub_pc_type", "icc"));
-          }
-        VPContactPetsc(PCSetFromOptions(inner));
-        VPContactPetsc(PCSetUp(inner));
+        PC pc;
+        VPContactPetsc(KSPSetType(solver, KSPCG));
+        VPContactPetsc(KSPGetPC(solver, &pc));
+        VPContactPetsc(
+          PCSetType(pc, method == SpdMethod::cg_amg ? PCGAMG : PCBJACOBI));
+        VPContactPetsc(
+          PetscOptionsSetValue(nullptr, "-vpcontact_sub_pc_type", "icc"));
+        VPContactPetsc(KSPSetOptionsPrefix(solver, "vpcontact_"));
+        VPContactPetsc(KSPSetFromOptions(solver));
+        VPContactPetsc(KSPSetNormType(solver, KSP_NORM_UNPRECONDITIONED));
+        VPContactPetsc(KSPSetInitialGuessNonzero(solver, PETSC_TRUE));
       }
 
       void
@@ -336,52 +314,6 @@ namespace VPContact
           VPContactPetsc(VecDestroy(&v));
       }
 
-      /// The matrix with its held rows masked (see SpdSolver).
-      void
-      make_masked_operators()
-      {
-        PetscInt n, N;
-        VPContactPetsc(MatGetLocalSize(A, &n, nullptr));
-        VPContactPetsc(MatGetSize(A, &N, nullptr));
-        VPContactPetsc(
-          MatCreateShell(communicator, n, n, N, N, this, &masked_matrix));
-        VPContactPetsc(MatShellSetOperation(masked_matrix,
-                                            MATOP_MULT,
-                                            reinterpret_cast<void (*)(void)>(
-                                              &apply_masked_matrix)));
-      }
-
-      static PetscErrorCode
-      apply_masked_matrix(Mat shell, Vec in, Vec out)
-      {
-        PetscSpdSolver *self;
-        PetscCall(MatShellGetContext(shell, &self));
-        PetscCall(MatMult(self->A, in, out));
-        return self->zero_held(out);
-      }
-
-      static PetscErrorCode
-      apply_masked_preconditioner(PC shell, Vec in, Vec out)
-      {
-        PetscSpdSolver *self;
-        PetscCall(PCShellGetContext(shell, &self));
-        PetscCall(PCApply(self->inner, in, out));
-        return self->zero_held(out);
-      }
-
-      PetscErrorCode
-      zero_held(Vec v) const
-      {
-        if (held->empty())
-          return 0;
-        PetscScalar *entries;
-        PetscCall(VecGetArray(v, &entries));
-        for (const auto i : *held)
-          entries[i] = 0.;
-        PetscCall(VecRestoreArray(v, &entries));
-        return 0;
-      }
-
       static void
       copy_to(const TrilinosWrappers::MPI::Vector &from, Vec to)
       {
@@ -405,10 +337,6 @@ namespace VPContact
       {
         if (ksp != nullptr)
           KSPDestroy(&ksp);
-        if (inner != nullptr)
-          PCDestroy(&inner);
-        if (masked_matrix != nullptr)
-          MatDestroy(&masked_matrix);
         if (A != nullptr)
           MatDestroy(&A);
         if (x != nullptr)
@@ -417,15 +345,11 @@ namespace VPContact
           VecDestroy(&b);
       }
 
-      const SpdMethod                  method;
-      MPI_Comm                         communicator  = MPI_COMM_WORLD;
-      Mat                              A             = nullptr;
-      Mat                              masked_matrix = nullptr;
-      PC                               inner         = nullptr;
-      KSP                              ksp           = nullptr;
-      Vec                              x = nullptr, b = nullptr;
-      const std::vector<unsigned int>  no_rows;
-      const std::vector<unsigned int> *held = &no_rows;
+      const SpdMethod method;
+      MPI_Comm        communicator = MPI_COMM_WORLD;
+      Mat             A            = nullptr;
+      KSP             ksp          = nullptr;
+      Vec             x = nullptr, b = nullptr;
     };
   } // namespace
 

@@ -64,10 +64,6 @@ namespace VPContact
     precondition(TrilinosWrappers::MPI::Vector       &dst,
                  const TrilinosWrappers::MPI::Vector &src);
 
-    /// Solver/Linear algebra.
-    LinearAlgebra
-    package() const;
-
     /// Whether the method is a factorization.
     bool
     is_direct() const;

@@ -61,7 +61,8 @@ namespace VPContact
    *   right-hand side of a step;
    * - simulator_implicit.cc: the backward Euler alternative to step 1-3;
    * - simulator_stress.cc: the stress update and its safeguards;
-   * - simulator_damage.cc: the damage field and its obstacle problem;
+   * - simulator_damage.cc: the damage field, its setup and assembly;
+   * - simulator_damage_solve.cc: the damage obstacle problem (step 4);
    * - simulator_output.cc: statistics, screen and field output;
    * - simulator_checkpoint.cc: writing a checkpoint, and resuming from one.
    *
@@ -271,9 +272,6 @@ namespace VPContact
     stress_error(const double time) const;
 
     // simulator_damage.cc
-    IndexSet
-    relevant_dofs_of_components(const unsigned int first,
-                                const unsigned int last) const;
     void
     setup_damage();
     void
@@ -284,6 +282,8 @@ namespace VPContact
     damage_range(const TrilinosWrappers::MPI::Vector &v) const;
     void
     assemble_damage(const bool matrix);
+
+    // simulator_damage_solve.cc
     void
     solve_damage(const unsigned int n);
     bool

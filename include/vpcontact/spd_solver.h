@@ -65,11 +65,13 @@ namespace VPContact
    * pass over their entries.
    *
    * A solve may hold some rows: K x = b is then solved on the other rows
-   * (the free ones) with x = 0 on the held ones, as CG on P K P + (I - P)
-   * preconditioned by P C P + (I - P), P the projection onto the free rows
-   * and C the preconditioner of all of K. Neither K nor C is rebuilt when the
-   * held rows change, which they do in every iteration of the damage
-   * bounds' active set method. The factorizations solve with all rows.
+   * (the free ones) with x = 0 on the held ones. Trilinos runs CG on
+   * P K P + (I - P) preconditioned by P C P + (I - P), P the projection onto
+   * the free rows and C the preconditioner of all of K, so that neither is
+   * rebuilt when the held rows change, as they do in every iteration of the
+   * damage bounds' active set method. PETSc solves on the free rows'
+   * submatrix with a preconditioner of its own. The factorizations solve
+   * with all rows.
    */
   class SpdSolver
   {
