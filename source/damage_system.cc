@@ -32,6 +32,20 @@ namespace VPContact
         "is small. 'AMG': algebraic multigrid (ML, GAMG), whose iterations "
         "do not grow with the mesh, for meshes far finer than 512^2 cells "
         "or where kappa k / h^2 is large.");
+      prm.declare_entry(
+        "Damage obstacle solver",
+        "active set",
+        Patterns::Selection("active set|SNES VI"),
+        "How the bounds 0 <= zeta <= 1 of the damage problem are found. "
+        "'active set': the program's primal-dual active set around the CG "
+        "solves above, warm-started from the previous step's sets, with "
+        "inexact solves while the sets still change (Damage/Maximum active "
+        "set iterations bounds it). 'SNES VI': PETSc's reduced-space "
+        "semismooth Newton method for variational inequalities "
+        "(SNESVINEWTONRSLS) on the whole problem, started from zeta_{n-1}, "
+        "with CG and block Jacobi / ICC on the free nodes; it needs "
+        "Linear algebra = PETSc and a mesh without hanging nodes. Both "
+        "solve the same discrete problem.");
     }
     prm.leave_subsection();
   }
@@ -43,11 +57,18 @@ namespace VPContact
   DamageSystem<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    method  = (prm.get("Damage preconditioner") == "AMG" ?
-                 SpdMethod::cg_amg :
-                 SpdMethod::cg_incomplete_cholesky);
-    package = (prm.get("Linear algebra") == "PETSc" ? LinearAlgebra::petsc :
-                                                      LinearAlgebra::trilinos);
+    method      = (prm.get("Damage preconditioner") == "AMG" ?
+                     SpdMethod::cg_amg :
+                     SpdMethod::cg_incomplete_cholesky);
+    package     = (prm.get("Linear algebra") == "PETSc" ? LinearAlgebra::petsc :
+                                                          LinearAlgebra::trilinos);
+    use_snes_vi = (prm.get("Damage obstacle solver") == "SNES VI");
+    AssertThrow(!use_snes_vi || package == LinearAlgebra::petsc,
+                ExcMessage(parameter_message(
+                  "Solver/Damage obstacle solver",
+                  "SNES VI",
+                  "PETSc's SNES VI needs Solver/Linear algebra = PETSc "
+                  "(it is Trilinos here): set both, or choose 'active set'.")));
     prm.leave_subsection();
   }
 
@@ -342,6 +363,48 @@ namespace VPContact
   {
     solver = create_spd_solver(package, method, "Solver/Damage preconditioner");
     solver->initialize(system_matrix, NearNullSpace());
+    if (use_snes_vi)
+      {
+        // SNES VI sees the bounds of every node; a hanging node must
+        // instead follow its parents, which the active set method holds.
+        AssertThrow(!has_hanging_nodes,
+                    ExcMessage(parameter_message(
+                      "Solver/Damage obstacle solver",
+                      "SNES VI",
+                      "the mesh has hanging nodes (adaptive refinement), "
+                      "which SNES VI cannot hold to their parents: choose "
+                      "'active set' for this scene.")));
+        if (!obstacle_snes)
+          obstacle_snes = std::make_unique<DamageObstacleSnes>();
+        obstacle_snes->initialize(system_matrix);
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  DamageSystem<dim>::solves_obstacle_whole() const
+  {
+    return use_snes_vi;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageSystem<dim>::solve_obstacle(const TrilinosWrappers::MPI::Vector &b,
+                                    TrilinosWrappers::MPI::Vector       &zeta,
+                                    const double       tolerance,
+                                    const unsigned int max_iterations,
+                                    const unsigned int max_linear_iterations)
+  {
+    Assert(obstacle_snes, ExcMessage("initialize_preconditioner() first."));
+    return obstacle_snes->solve(b,
+                                zeta,
+                                tolerance,
+                                max_iterations,
+                                max_linear_iterations);
   }
 
 

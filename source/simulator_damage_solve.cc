@@ -38,6 +38,19 @@ namespace VPContact
     damage_model.check_source_finite(all_finite(damage_load, mpi_communicator),
                                      n,
                                      time_discretization.time(n));
+    if (damage_system.solves_obstacle_whole())
+      {
+        TimerOutput::Scope t(computing_timer, "Damage solve");
+        damage_owned = damage_old;
+        last_damage_iterations
+          = damage_system.solve_obstacle(damage_load,
+                                         damage_owned,
+                                         linear_solver.tolerance(),
+                                         damage_model.max_iterations(),
+                                         linear_solver.iteration_limit());
+        damage = damage_owned;
+        return;
+      }
     TrilinosWrappers::MPI::Vector step_rhs(damage_old);
     K.vmult(step_rhs, damage_old);
     step_rhs.sadd(-1., 1., damage_load);

@@ -1,30 +1,14 @@
 // The PETSc implementation of SpdSolver: the matrix copied once into a PETSc
 // AIJ matrix, PETSc's CG with GAMG or block Jacobi / ICC, or a Cholesky
 // factorization by MUMPS or CHOLMOD through PETSc.
+#include <vpcontact/petsc_tools.h>
 #include <vpcontact/spd_solver.h>
 
 #include <deal.II/base/exceptions.h>
 
-#include <Epetra_CrsMatrix.h>
-#include <Epetra_Map.h>
-#include <algorithm>
 #include <petscksp.h>
 #include <string>
-#include <utility>
 #include <vector>
-
-// Every PETSc call returns an error code; a failed one stops the run with
-// the call's text.
-#define VPContactPetsc(call)                                   \
-  do                                                           \
-    {                                                          \
-      const PetscErrorCode vpcontact_petsc_error = (call);     \
-      AssertThrow(vpcontact_petsc_error == 0,                  \
-                  dealii::ExcMessage(                          \
-                    std::string("PETSc: ") + #call             \
-                    + " failed with error code "               \
-                    + std::to_string(vpcontact_petsc_error))); \
-  } while (false)
 
 namespace VPContact
 {
@@ -54,7 +38,7 @@ namespace VPContact
       {
         release();
         communicator = matrix.get_mpi_communicator();
-        copy_matrix(matrix, near_null_space.dofs_per_node);
+        A            = copy_to_petsc(matrix, near_null_space.dofs_per_node);
         VPContactPetsc(MatCreateVecs(A, &x, &b));
         VPContactPetsc(KSPCreate(communicator, &ksp));
         PC pc;
@@ -99,8 +83,8 @@ namespace VPContact
         Assert(held_rows.empty() || !is_direct(), ExcNotImplemented());
         if (!held_rows.empty())
           return solve_on_free_rows(solution, rhs, control, held_rows);
-        copy_to(rhs, b);
-        copy_to(solution, x);
+        copy_to_petsc(rhs, b);
+        copy_to_petsc(solution, x);
         if (!is_direct())
           VPContactPetsc(KSPSetTolerances(ksp,
                                           0.,
@@ -109,7 +93,7 @@ namespace VPContact
                                           control.max_steps()));
         VPContactPetsc(KSPSolve(ksp, b, x));
         const unsigned int iterations = finished(ksp);
-        copy_from(x, solution);
+        copy_from_petsc(x, solution);
         return is_direct() ? 1 : iterations;
       }
 
@@ -117,11 +101,11 @@ namespace VPContact
       precondition(TrilinosWrappers::MPI::Vector       &dst,
                    const TrilinosWrappers::MPI::Vector &src) override
       {
-        copy_to(src, b);
+        copy_to_petsc(src, b);
         PC pc;
         VPContactPetsc(KSPGetPC(ksp, &pc));
         VPContactPetsc(PCApply(pc, b, x));
-        copy_from(x, dst);
+        copy_from_petsc(x, dst);
       }
 
       bool
@@ -172,8 +156,8 @@ namespace VPContact
                                         control.tolerance(),
                                         no_divergence_test,
                                         control.max_steps()));
-        copy_to(rhs, b);
-        copy_to(solution, x);
+        copy_to_petsc(rhs, b);
+        copy_to_petsc(solution, x);
         Vec b_free, x_free;
         VPContactPetsc(VecGetSubVector(b, rows, &b_free));
         VPContactPetsc(VecGetSubVector(x, rows, &x_free));
@@ -184,7 +168,7 @@ namespace VPContact
         KSPDestroy(&sub_ksp);
         MatDestroy(&sub);
         ISDestroy(&rows);
-        copy_from(x, solution);
+        copy_from_petsc(x, solution);
         return iterations;
       }
 
@@ -204,60 +188,6 @@ namespace VPContact
             throw SolverControl::NoConvergence(iterations, residual);
           }
         return iterations;
-      }
-
-      /**
-       * The owned rows of the Trilinos matrix as a PETSc AIJ matrix with
-       * the same rows on each rank (both take them in the order of the
-       * global indices), and with the block size of the nodes, which GAMG
-       * aggregates together.
-       */
-      void
-      copy_matrix(const TrilinosWrappers::SparseMatrix &matrix,
-                  const unsigned int                    dofs_per_node)
-      {
-        const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
-        const int               n      = epetra.NumMyRows();
-        std::vector<PetscInt>   row_start(n + 1, 0);
-        std::vector<std::pair<PetscInt, PetscScalar>> row;
-        std::vector<PetscInt>                         columns;
-        std::vector<PetscScalar>                      values;
-        columns.reserve(epetra.NumMyNonzeros());
-        values.reserve(epetra.NumMyNonzeros());
-        for (int r = 0; r < n; ++r)
-          {
-            int     length;
-            double *entries;
-            int    *local_columns;
-            epetra.ExtractMyRowView(r, length, entries, local_columns);
-            row.clear();
-            for (int j = 0; j < length; ++j)
-              row.emplace_back(epetra.ColMap().GID64(local_columns[j]),
-                               entries[j]);
-            std::sort(row.begin(), row.end(), [](const auto &p, const auto &q) {
-              return p.first < q.first;
-            });
-            for (const auto &[column, value] : row)
-              {
-                columns.push_back(column);
-                values.push_back(value);
-              }
-            row_start[r + 1] = columns.size();
-          }
-        VPContactPetsc(MatCreate(communicator, &A));
-        VPContactPetsc(MatSetSizes(A, n, n, matrix.m(), matrix.n()));
-        VPContactPetsc(MatSetBlockSize(A, dofs_per_node));
-        VPContactPetsc(MatSetType(A, MATAIJ));
-        VPContactPetsc(MatSeqAIJSetPreallocationCSR(A,
-                                                    row_start.data(),
-                                                    columns.data(),
-                                                    values.data()));
-        VPContactPetsc(MatMPIAIJSetPreallocationCSR(A,
-                                                    row_start.data(),
-                                                    columns.data(),
-                                                    values.data()));
-        VPContactPetsc(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-        VPContactPetsc(MatSetOption(A, MAT_SPD, PETSC_TRUE));
       }
 
       /**
@@ -292,7 +222,7 @@ namespace VPContact
         for (unsigned int m = 0; m < n_modes; ++m)
           {
             VPContactPetsc(VecDuplicate(b, &modes[m]));
-            copy_to(near_null_space.modes[m], modes[m]);
+            copy_to_petsc(near_null_space.modes[m], modes[m]);
             // Gram-Schmidt against the modes before it.
             for (unsigned int l = 0; l < m; ++l)
               {
@@ -312,24 +242,6 @@ namespace VPContact
         VPContactPetsc(MatNullSpaceDestroy(&null_space));
         for (Vec &v : modes)
           VPContactPetsc(VecDestroy(&v));
-      }
-
-      static void
-      copy_to(const TrilinosWrappers::MPI::Vector &from, Vec to)
-      {
-        PetscScalar *entries;
-        VPContactPetsc(VecGetArray(to, &entries));
-        std::copy(from.begin(), from.end(), entries);
-        VPContactPetsc(VecRestoreArray(to, &entries));
-      }
-
-      static void
-      copy_from(Vec from, TrilinosWrappers::MPI::Vector &to)
-      {
-        const PetscScalar *entries;
-        VPContactPetsc(VecGetArrayRead(from, &entries));
-        std::copy(entries, entries + to.locally_owned_size(), to.begin());
-        VPContactPetsc(VecRestoreArrayRead(from, &entries));
       }
 
       void

@@ -5,6 +5,7 @@
 #ifndef vpcontact_damage_system_h
 #define vpcontact_damage_system_h
 
+#include <vpcontact/damage_obstacle_snes.h>
 #include <vpcontact/spd_solver.h>
 
 #include <deal.II/base/index_set.h>
@@ -146,6 +147,23 @@ namespace VPContact
           const double                         tolerance,
           const unsigned int                   max_iterations);
 
+    /// Whether Solver/Damage obstacle solver = SNES VI: the bounds are then
+    /// found by solve_obstacle() instead of the caller's active set.
+    bool
+    solves_obstacle_whole() const;
+
+    /**
+     * The obstacle problem K zeta = b with 0 <= zeta <= 1 by PETSc's SNES
+     * VI (see DamageObstacleSnes): @p zeta holds zeta_{n-1} and gets
+     * zeta_n. Returns the Newton steps.
+     */
+    unsigned int
+    solve_obstacle(const TrilinosWrappers::MPI::Vector &b,
+                   TrilinosWrappers::MPI::Vector       &zeta,
+                   const double                         tolerance,
+                   const unsigned int                   max_iterations,
+                   const unsigned int                   max_linear_iterations);
+
 
   private:
     /// Sets the index sets, full_position and cell_dofs; returns a ghosted
@@ -187,6 +205,9 @@ namespace VPContact
     LinearAlgebra                  package = LinearAlgebra::trilinos;
     TrilinosWrappers::SparseMatrix system_matrix;
     std::unique_ptr<SpdSolver>     solver;
+    /// Solver/Damage obstacle solver = SNES VI, and its solver.
+    bool                                use_snes_vi = false;
+    std::unique_ptr<DamageObstacleSnes> obstacle_snes;
   };
 } // namespace VPContact
 
