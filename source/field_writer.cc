@@ -6,6 +6,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <memory>
 #include <sstream>
 #include <utility>
 
@@ -31,15 +32,21 @@ namespace VPContact
   {
     Assert(!pending(), ExcMessage("wait() for the previous write first"));
     // The task owns the patches; the file is written only once the whole
-    // piece is in memory.
+    // piece is in memory. It holds them through a shared pointer:
+    // Threads::new_task() takes the task as a std::function, which copies
+    // what the lambda captures, and a copy of the patches would double the
+    // memory of the output at its peak.
     // It returns what went wrong, or an empty string.
-    auto task = [fields = std::move(fields), filename, flags]() -> std::string {
+    auto task
+      = [fields = std::make_shared<const FieldPatches<dim>>(std::move(fields)),
+         filename,
+         flags]() -> std::string {
       try
         {
           std::ostringstream vtu;
-          DataOutBase::write_vtu(fields.patches,
-                                 fields.names,
-                                 fields.vector_ranges,
+          DataOutBase::write_vtu(fields->patches,
+                                 fields->names,
+                                 fields->vector_ranges,
                                  flags,
                                  vtu);
           write_file_atomically(filename, vtu.str());
