@@ -219,6 +219,25 @@ def advice(best, sizes):
     return lines
 
 
+def time_split(best, size):
+    """Where a step's time goes on the largest mesh: the share of the
+    displacement solve, the damage solves and the assembly in each run."""
+    lines = ["| run | ranks | per step [ms] | displacement solve | "
+             "damage solves | assembly | the rest |", "|---|---|---|---|---|---|---|"]
+    for (s, k), r in sorted(best.items(), key=lambda i: (
+            i[0][1][3], order(i[1]))):
+        step = r.get("per_step_ms")
+        if s != size or step in ("", None, 0):
+            continue
+        shares = [ratio(r.get(p + "_ms"), step) for p in
+                  ("solve", "damage_solve", "assembly")]
+        if any(x == "" for x in shares):
+            continue
+        lines.append(f"| {name(r)} | {k[3]} | {fmt(step)} | " + " | ".join(
+            f"{100 * x:.0f} %" for x in shares + [1 - sum(shares)]) + " |")
+    return lines
+
+
 def write_report(out, csv_path, rows):
     ok = [r for r in rows if r["status"] == "ok"] or rows
     m = ok[0]
@@ -287,7 +306,16 @@ def write_report(out, csv_path, rows):
         "", "## Growth with the mesh", "",
         "Factor by which the time per step grows per 4x unknowns "
         "(4 where it grows like the unknowns).", "",
-    ] + growth_table(best, sizes)
+    ] + growth_table(best, sizes) + [
+        "", f"## Where the time goes at {max(sizes)}²", "",
+        "Shares of a step. The displacement solve of CG with AMG is a "
+        "number of AMG cycles over the whole displacement block, each "
+        "bound by the memory bandwidth; a factorization's solve is a pair "
+        "of triangular substitutions over factors many times the size of "
+        "the matrix. The damage solves are several CG solves per step, one "
+        "for each active set the bound iteration tries "
+        "([damage.md](damage.md)).", "",
+    ] + time_split(best, max(sizes))
     # One line per reason, listing the runs it concerns.
     reasons = {}
     for r in rows:

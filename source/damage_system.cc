@@ -361,9 +361,15 @@ namespace VPContact
   void
   DamageSystem<dim>::initialize_preconditioner()
   {
-    solver = create_spd_solver(package, method, "Solver/Damage preconditioner");
-    solver->initialize(system_matrix, NearNullSpace());
-    if (use_snes_vi)
+    // SNES VI does the linear solves itself: the preconditioner of the
+    // active set's solves is built only for them.
+    if (!use_snes_vi)
+      {
+        solver
+          = create_spd_solver(package, method, "Solver/Damage preconditioner");
+        solver->initialize(system_matrix, NearNullSpace());
+      }
+    else
       {
         // SNES VI sees the bounds of every node; a hanging node must
         // instead follow its parents, which the active set method holds.
