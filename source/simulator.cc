@@ -85,7 +85,7 @@ namespace VPContact
     geometry.parse_parameters(prm, parameter_directory);
     material.parse_parameters(prm);
     viscoplasticity.parse_parameters(prm);
-    viscoplastic_law = viscoplasticity.create_law();
+    viscoplastic_law = viscoplasticity.create_law(prm);
     damage_model.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
     friction.parse_parameters(prm);

@@ -1,4 +1,5 @@
-// The viscoplastic laws and the section "Viscoplasticity".
+// The viscoplastic laws G = 0, the paper's and Maxwell's, the registry of
+// laws, and the section "Viscoplasticity".
 #include <vpcontact/input_error.h>
 #include <vpcontact/viscoplastic_law.h>
 
@@ -246,6 +247,151 @@ namespace VPContact
 
 
   template <int dim>
+  bool
+  ViscoplasticLawRegistry<dim>::add(const std::string &name,
+                                    const std::string &documentation,
+                                    const Declare     &declare,
+                                    const Create      &create)
+  {
+    const bool inserted
+      = entries().emplace(name, Entry{documentation, declare, create}).second;
+    Assert(inserted, ExcMessage("Two viscoplastic laws named " + name));
+    (void)inserted;
+    return true;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ViscoplasticLawRegistry<dim>::names()
+  {
+    std::string result;
+    for (const auto &[name, entry] : entries())
+      result += (result.empty() ? "" : "|") + name;
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ViscoplasticLawRegistry<dim>::documentation()
+  {
+    std::string result;
+    for (const auto &[name, entry] : entries())
+      result
+        += (result.empty() ? "'" : " '") + name + "': " + entry.documentation;
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  ViscoplasticLawRegistry<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    for (const auto &[name, entry] : entries())
+      if (entry.declare)
+        entry.declare(prm);
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<ViscoplasticLaw<dim>>
+  ViscoplasticLawRegistry<dim>::create(const std::string &name,
+                                       ParameterHandler  &prm)
+  {
+    const auto entry = entries().find(name);
+    AssertThrow(entry != entries().end(),
+                ExcMessage("Viscoplasticity/Law = " + name
+                           + ": unknown law (one of " + names() + ")."));
+    return entry->second.create(prm);
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, typename ViscoplasticLawRegistry<dim>::Entry> &
+  ViscoplasticLawRegistry<dim>::entries()
+  {
+    // Constructed on first use, so that laws registered from the static
+    // initialisers of other files find it whatever the order of those.
+    static std::map<std::string, Entry> registered_laws;
+    return registered_laws;
+  }
+
+
+
+  namespace
+  {
+    // The laws of this file: G = 0, the paper's law and Maxwell's. Their
+    // entries sit directly in "Viscoplasticity" (scenes written for the
+    // first release name them there).
+    template <int dim>
+    void
+    declare_maxwell_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Relaxation time",
+                        "1",
+                        Patterns::Double(0),
+                        "eta of the Maxwell law [s]. Must be positive. The "
+                        "explicit step is stable only for Time step <= 2 eta.");
+      prm.declare_entry("Truncate Maxwell",
+                        "false",
+                        Patterns::Bool(),
+                        "Maxwell law only: relax Phi_L(sigma) instead of "
+                        "sigma, which bounds the rate by L/eta.");
+    }
+
+
+
+    template <int dim>
+    bool
+    register_builtin_laws()
+    {
+      using Registry = ViscoplasticLawRegistry<dim>;
+      Registry::add("none",
+                    "G = 0 (linear elasticity).",
+                    nullptr,
+                    [](ParameterHandler &) {
+                      return std::make_unique<NoViscoplasticity<dim>>();
+                    });
+      Registry::add("paper",
+                    "G = -(1 - zeta) Phi_L(sigma), the paper's (18)-(19), "
+                    "with Phi_L the component-wise truncation at +-L.",
+                    nullptr,
+                    [](ParameterHandler &prm) {
+                      return std::make_unique<DamageTruncatedLaw<dim>>(
+                        prm.get_double("Truncation L"));
+                    });
+      Registry::add(
+        "maxwell",
+        "G = -sigma/eta (or -Phi_L(sigma)/eta with 'Truncate Maxwell').",
+        &declare_maxwell_parameters<dim>,
+        [](ParameterHandler &prm) {
+          const double eta = prm.get_double("Relaxation time");
+          VPContactCheckParameter(eta > 0,
+                                  "Viscoplasticity/Relaxation time",
+                                  eta,
+                                  "must be positive [s].");
+          return std::make_unique<MaxwellLaw<dim>>(
+            eta,
+            prm.get_bool("Truncate Maxwell") ?
+              prm.get_double("Truncation L") :
+              std::numeric_limits<double>::infinity());
+        });
+      return true;
+    }
+
+    [[maybe_unused]] const bool builtin_laws_registered
+      = register_builtin_laws<2>() && register_builtin_laws<3>();
+  } // namespace
+
+
+
+  template <int dim>
   void
   ViscoplasticityParameters<dim>::declare_parameters(ParameterHandler &prm)
   {
@@ -253,23 +399,16 @@ namespace VPContact
     {
       prm.declare_entry("Law",
                         "none",
-                        Patterns::Selection("none|paper|maxwell"),
+                        Patterns::Selection(
+                          ViscoplasticLawRegistry<dim>::names()),
                         "The viscoplastic function G of the law "
-                        "sigma_dot = E eps(u_dot) + G. 'none': G = 0 (linear "
-                        "elasticity). 'paper': G = -(1 - zeta) Phi_L(sigma), "
-                        "the paper's (18)-(19), with Phi_L the component-wise "
-                        "truncation at +-L. 'maxwell': G = -sigma/eta (or "
-                        "-Phi_L(sigma)/eta with 'Truncate Maxwell').");
+                        "sigma_dot = E eps(u_dot) + G. "
+                          + ViscoplasticLawRegistry<dim>::documentation());
       prm.declare_entry("Truncation L",
                         "1000",
                         Patterns::Double(0),
                         "L of the truncation Phi_L [Pa], for 'paper' and the "
                         "truncated Maxwell law. Must be positive.");
-      prm.declare_entry("Relaxation time",
-                        "1",
-                        Patterns::Double(0),
-                        "eta of the Maxwell law [s]. Must be positive. The "
-                        "explicit step is stable only for Time step <= 2 eta.");
       prm.declare_entry(
         "Time integration",
         "explicit",
@@ -287,11 +426,7 @@ namespace VPContact
                         "stress exceeds this multiple of Young's modulus (a "
                         "strain far beyond the small-strain theory, i.e. an "
                         "unstable explicit step) or is not finite.");
-      prm.declare_entry("Truncate Maxwell",
-                        "false",
-                        Patterns::Bool(),
-                        "Maxwell law only: relax Phi_L(sigma) instead of "
-                        "sigma, which bounds the rate by L/eta.");
+      ViscoplasticLawRegistry<dim>::declare_parameters(prm);
     }
     prm.leave_subsection();
   }
@@ -303,12 +438,10 @@ namespace VPContact
   ViscoplasticityParameters<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Viscoplasticity");
-    law_name          = prm.get("Law");
-    truncation        = prm.get_double("Truncation L");
-    relaxation_time   = prm.get_double("Relaxation time");
-    truncate_maxwell  = prm.get_bool("Truncate Maxwell");
-    divergence_factor = prm.get_double("Divergence limit");
-    implicit_step     = (prm.get("Time integration") == "implicit");
+    law_name                = prm.get("Law");
+    divergence_factor       = prm.get_double("Divergence limit");
+    implicit_step           = (prm.get("Time integration") == "implicit");
+    const double truncation = prm.get_double("Truncation L");
     prm.leave_subsection();
     VPContactCheckParameter(divergence_factor > 0,
                             "Viscoplasticity/Divergence limit",
@@ -318,31 +451,18 @@ namespace VPContact
                             "Viscoplasticity/Truncation L",
                             truncation,
                             "must be positive [Pa].");
-    VPContactCheckParameter(relaxation_time > 0,
-                            "Viscoplasticity/Relaxation time",
-                            relaxation_time,
-                            "must be positive [s].");
   }
 
 
 
   template <int dim>
   std::unique_ptr<ViscoplasticLaw<dim>>
-  ViscoplasticityParameters<dim>::create_law() const
+  ViscoplasticityParameters<dim>::create_law(ParameterHandler &prm) const
   {
-    if (law_name == "none")
-      return std::make_unique<NoViscoplasticity<dim>>();
-    if (law_name == "paper")
-      return std::make_unique<DamageTruncatedLaw<dim>>(truncation);
-    if (law_name == "maxwell")
-      return std::make_unique<MaxwellLaw<dim>>(
-        relaxation_time,
-        truncate_maxwell ? truncation :
-                           std::numeric_limits<double>::infinity());
-    AssertThrow(false,
-                ExcMessage("Viscoplasticity/Law = " + law_name
-                           + ": unknown law (none, paper or maxwell)."));
-    return nullptr;
+    prm.enter_subsection("Viscoplasticity");
+    auto law = ViscoplasticLawRegistry<dim>::create(law_name, prm);
+    prm.leave_subsection();
+    return law;
   }
 
 
@@ -391,6 +511,8 @@ namespace VPContact
   template class DamageTruncatedLaw<3>;
   template class MaxwellLaw<2>;
   template class MaxwellLaw<3>;
+  template class ViscoplasticLawRegistry<2>;
+  template class ViscoplasticLawRegistry<3>;
   template class ViscoplasticityParameters<2>;
   template class ViscoplasticityParameters<3>;
 } // namespace VPContact

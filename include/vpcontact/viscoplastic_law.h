@@ -6,7 +6,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -185,8 +187,95 @@ namespace VPContact
                          const SymmetricTensor<4, dim> &stiffness);
 
   /**
-   * Section "Viscoplasticity": which law, and its parameters. Adding a law
-   * means adding a class above and one branch to create_law().
+   * The laws a scene can name in Viscoplasticity/Law, in the manner of
+   * ASPECT's plugins: a law registers itself, for 2D and 3D, with its name,
+   * a sentence for the parameter documentation, a function that declares its
+   * own parameters (called inside the section "Viscoplasticity") and one that
+   * creates the law from them. VPCONTACT_REGISTER_VISCOPLASTIC_LAW does this
+   * from the law's own source file, so that adding a law touches no other
+   * file (doc/design.md walks through an example).
+   */
+  template <int dim>
+  class ViscoplasticLawRegistry
+  {
+  public:
+    using Declare = std::function<void(ParameterHandler &)>;
+    using Create  = std::function<std::unique_ptr<ViscoplasticLaw<dim>>(
+      ParameterHandler &)>;
+
+    /// Register a law; returns true (for the static initialisers).
+    static bool
+    add(const std::string &name,
+        const std::string &documentation,
+        const Declare     &declare,
+        const Create      &create);
+
+    /// The names, alphabetically, as a Patterns::Selection ("a|b|c").
+    static std::string
+    names();
+
+    /// "'name': documentation" of every law, alphabetically.
+    static std::string
+    documentation();
+
+    /// Declare the parameters of every law (inside "Viscoplasticity").
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Create the law @p name from its parameters (inside
+    /// "Viscoplasticity").
+    static std::unique_ptr<ViscoplasticLaw<dim>>
+    create(const std::string &name, ParameterHandler &prm);
+
+  private:
+    struct Entry
+    {
+      std::string documentation;
+      Declare     declare;
+      Create      create;
+    };
+
+    static std::map<std::string, Entry> &
+    entries();
+  };
+
+
+
+/**
+ * Register the law template @p classname (with a static
+ * declare_parameters(ParameterHandler &) and a constructor from the
+ * ParameterHandler, both inside the section "Viscoplasticity") under @p name,
+ * for 2D and 3D. One line in the law's source file, at namespace scope in
+ * namespace VPContact.
+ */
+#define VPCONTACT_REGISTER_VISCOPLASTIC_LAW(classname, name, documentation) \
+  template class classname<2>;                                              \
+  template class classname<3>;                                              \
+  namespace                                                                 \
+  {                                                                         \
+    [[maybe_unused]] const bool classname##_registered                      \
+      = ViscoplasticLawRegistry<2>::add(                                    \
+          name,                                                             \
+          documentation,                                                    \
+          &classname<2>::declare_parameters,                                \
+          [](ParameterHandler &prm) {                                       \
+            return std::make_unique<classname<2>>(prm);                     \
+          })                                                                \
+        && ViscoplasticLawRegistry<3>::add(                                 \
+          name,                                                             \
+          documentation,                                                    \
+          &classname<3>::declare_parameters,                                \
+          [](ParameterHandler &prm) {                                       \
+            return std::make_unique<classname<3>>(prm);                     \
+          });                                                               \
+  }
+
+
+
+  /**
+   * Section "Viscoplasticity": which law, the entries common to all laws
+   * (time integration, divergence safeguard, the truncation L), and the
+   * registered laws' own entries.
    */
   template <int dim>
   class ViscoplasticityParameters
@@ -198,8 +287,9 @@ namespace VPContact
     void
     parse_parameters(ParameterHandler &prm);
 
+    /// The law named in the section, created from its parameters.
     std::unique_ptr<ViscoplasticLaw<dim>>
-    create_law() const;
+    create_law(ParameterHandler &prm) const;
 
     /**
      * A run stops when some stress component exceeds this multiple of
@@ -217,9 +307,6 @@ namespace VPContact
     bool        implicit_step     = false;
     double      divergence_factor = 1e6;
     std::string law_name          = "none";
-    double      truncation        = 1000;
-    double      relaxation_time   = 1;
-    bool        truncate_maxwell  = false;
   };
 } // namespace VPContact
 
