@@ -52,7 +52,7 @@ namespace VPContact
     InitialConditions::declare_parameters(prm);
     TimeDiscretization::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);
-    DamageSystem<dim>::declare_parameters(prm);
+    DamageProblem<dim>::declare_parameters(prm);
     IncrementPredictor::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
@@ -92,7 +92,6 @@ namespace VPContact
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
-    damage_system.parse_parameters(prm);
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
@@ -103,6 +102,15 @@ namespace VPContact
     reference_solution.check_time_step(time_discretization.step_size(),
                                        time_discretization.end_time());
     checkpointing.parse_parameters(prm);
+    if (damage_model.is_active())
+      damage_problem
+        = std::make_unique<DamageProblem<dim>>(prm,
+                                               damage_model,
+                                               time_discretization,
+                                               linear_solver,
+                                               output_writer.directory(),
+                                               computing_timer,
+                                               mpi_communicator);
     // The mesh file may change under the same name between a run and its
     // resumption.
     if (const std::string checksum = geometry.mesh_file_checksum();
@@ -201,8 +209,15 @@ namespace VPContact
     start_cycle(cycle);
     setup_dofs();
     setup_stress_history();
-    if (damage_model.is_active())
-      setup_damage();
+    if (damage_problem)
+      {
+        damage_problem->setup(dof_handler,
+                              quadrature,
+                              locally_owned_dofs,
+                              locally_relevant_dofs,
+                              solution_owned);
+        solution = solution_owned;
+      }
     // A resumed run takes the state of its checkpoint's step and continues
     // after it (simulator_checkpoint.cc).
     const unsigned int first_step
@@ -305,16 +320,18 @@ namespace VPContact
     // phi_{n-1} stored by the assembly of step 2, and zeta_{n-1}. zeta_n
     // enters the solution only after the stress update, which still reads
     // zeta_{n-1}.
-    const bool damage = damage_model.is_active();
     if (viscoplasticity.implicit())
       solve_increment_implicit(time_discretization.time(n));
     else
       solve_increment(time_discretization.time(n), true);
-    if (damage)
-      solve_damage(n);
+    if (damage_problem)
+      damage_problem->solve(n, solution_owned, stress_history);
     update_stress(n);
-    if (damage)
-      store_damage(n);
+    if (damage_problem)
+      {
+        damage_problem->store(n, solution_owned);
+        solution = solution_owned;
+      }
   }
 
 

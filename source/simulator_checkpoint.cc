@@ -49,13 +49,11 @@ namespace VPContact
                                              mpi_communicator);
     if (friction_active)
       friction_active_set.write_state(sets_owned);
-    if (damage_model.is_active())
-      {
-        TrilinosWrappers::MPI::Vector bound_sets(damage_system.owned(),
-                                                 mpi_communicator);
-        damage_bounds.write_state(bound_sets);
-        damage_system.scatter(bound_sets, sets_owned);
-      }
+    // Scenes without damage keep the damage counters at 0.
+    std::map<std::string, double> damage_counters{{"max_damage_violation", 0.},
+                                                  {"damage_rings_ahead", 0.}};
+    if (damage_problem)
+      damage_problem->write_checkpoint(sets_owned, damage_counters);
     TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
                                        locally_relevant_dofs,
                                        mpi_communicator);
@@ -95,8 +93,7 @@ namespace VPContact
     metadata.field_outputs                      = output_writer.field_outputs();
     metadata.counters                           = verification.running_maxima();
     metadata.counters["max_friction_violation"] = max_friction_violation;
-    metadata.counters["max_damage_violation"]   = max_damage_violation;
-    metadata.counters["damage_rings_ahead"]     = damage_rings_ahead;
+    metadata.counters.insert(damage_counters.begin(), damage_counters.end());
     metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(
@@ -223,17 +220,6 @@ namespace VPContact
     sets = sets_owned;
     if (friction_active)
       friction_active_set.read_state(sets);
-    if (damage_model.is_active())
-      {
-        TrilinosWrappers::MPI::Vector bound_sets(damage_system.owned(),
-                                                 mpi_communicator);
-        damage_system.gather(sets_owned, bound_sets);
-        TrilinosWrappers::MPI::Vector ghosted(damage_system.owned(),
-                                              damage_system.relevant(),
-                                              mpi_communicator);
-        ghosted = bound_sets;
-        damage_bounds.read_state(ghosted);
-      }
     make_constraints(time_discretization.time(checkpoint.step), &solution);
 
     // What the run has written so far, as it stood at the checkpoint: the
@@ -252,9 +238,8 @@ namespace VPContact
       return found->second;
     };
     max_friction_violation = counter("max_friction_violation");
-    max_damage_violation   = counter("max_damage_violation");
-    damage_rings_ahead
-      = static_cast<unsigned int>(counter("damage_rings_ahead"));
+    if (damage_problem)
+      damage_problem->read_checkpoint(sets_owned, counter);
     increment_predictor.recorded(0) = increment_owned;
     increment_predictor.set_n_recorded(
       static_cast<unsigned int>(counter("recorded_increments")));

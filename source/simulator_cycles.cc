@@ -45,10 +45,7 @@ namespace VPContact
     statistics                 = Statistics();
     last_linear_iterations     = 0;
     last_active_set_iterations = 0;
-    last_damage_iterations     = 0;
-    last_damage_clip           = 0;
     max_friction_violation     = 0;
-    max_damage_violation       = 0;
     diagnostics_time           = 0;
     compared_times             = 0;
     max_error                  = ErrorNorms();

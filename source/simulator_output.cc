@@ -250,7 +250,9 @@ namespace VPContact
         + "  von Mises max = " + format("%.6e", measures.von_mises_max)
         + "  energy = " + format("%.6e", measures.energy);
     if (damage_model.is_active())
-      add_damage_statistics(line, measures.damaged_fraction);
+      damage_problem->add_statistics(statistics,
+                                     line,
+                                     measures.damaged_fraction);
     add_verification_statistics(line, time, u_max, components);
     add_reference_statistics(line, n);
     if (friction_active)
@@ -321,7 +323,7 @@ namespace VPContact
         const double error
           = verification.damage_error(dof_handler,
                                       solution,
-                                      damage_system.full_dofs(),
+                                      damage_problem->full_dofs(),
                                       time);
         AssertThrow(std::isfinite(error),
                     ExcMessage("Verification/Exact damage is not finite (NaN "
@@ -429,9 +431,8 @@ namespace VPContact
     if (damage_model.is_active())
       pcout << "Damage bounds 0 <= zeta <= 1 at every node and step: largest "
                "violation "
-            << max_damage_violation
-            << " (exactly 0: " << (max_damage_violation == 0. ? "yes" : "NO")
-            << ")\n";
+            << damage_problem->max_violation() << " (exactly 0: "
+            << (damage_problem->max_violation() == 0. ? "yes" : "NO") << ")\n";
     if (friction_active)
       pcout << "Tresca conditions at every contact node and step: largest "
                "violation "

@@ -7,9 +7,8 @@
 #include <vpcontact/cell_kinematics.h>
 #include <vpcontact/checkpointing.h>
 #include <vpcontact/convergence_table.h>
-#include <vpcontact/damage_bounds.h>
 #include <vpcontact/damage_model.h>
-#include <vpcontact/damage_system.h>
+#include <vpcontact/damage_problem.h>
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/friction_active_set.h>
 #include <vpcontact/geometry.h>
@@ -61,8 +60,6 @@ namespace VPContact
    *   right-hand side of a step;
    * - simulator_implicit.cc: the backward Euler alternative to step 1-3;
    * - simulator_stress.cc: the stress update and its safeguards;
-   * - simulator_damage.cc: the damage field, its setup and assembly;
-   * - simulator_damage_solve.cc: the damage obstacle problem (step 4);
    * - simulator_output.cc: statistics, screen and field output;
    * - simulator_checkpoint.cc: writing a checkpoint, and resuming from one.
    *
@@ -271,31 +268,6 @@ namespace VPContact
     double
     stress_error(const double time) const;
 
-    // simulator_damage.cc
-    void
-    setup_damage();
-    void
-    setup_mass_and_bounds();
-    void
-    interpolate_initial_damage();
-    std::pair<double, double>
-    damage_range(const TrilinosWrappers::MPI::Vector &v) const;
-    void
-    assemble_damage(const bool matrix);
-
-    // simulator_damage_solve.cc
-    void
-    solve_damage(const unsigned int n);
-    bool
-    find_damage_sets_fast(const TrilinosWrappers::MPI::Vector &step_rhs);
-    unsigned int
-    solve_damage_with_sets(const TrilinosWrappers::MPI::Vector &step_rhs,
-                           const double                         tolerance);
-    void
-    store_damage(const unsigned int n);
-    void
-    add_damage_statistics(std::string &line, const double fraction);
-
     // simulator_output.cc
     void
     print_header() const;
@@ -419,49 +391,8 @@ namespace VPContact
     std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_cells;
     static constexpr unsigned int stress_chunks = 64;
 
-    // The damage step (damage scenes only): its linear algebra on the
-    // damage degrees of freedom alone, its active set, and its vectors, all
-    // in the compact numbering of damage_system.
-    DamageSystem<dim> damage_system;
-    DamageBounds      damage_bounds;
-    /// zeta_{n-1} and zeta (owned), and a ghosted copy of zeta.
-    TrilinosWrappers::MPI::Vector damage_old;
-    TrilinosWrappers::MPI::Vector damage_owned;
-    TrilinosWrappers::MPI::Vector damage;
-    /// zeta - zeta_{n-1}, the unknown of the damage solves, and their
-    /// right-hand side (owned).
-    TrilinosWrappers::MPI::Vector damage_change;
-    TrilinosWrappers::MPI::Vector damage_rhs;
-    /// The nodes held in a damage solve (owned positions) and the change
-    /// that puts the nodes at a bound there (owned).
-    std::vector<unsigned int>     damage_held;
-    TrilinosWrappers::MPI::Vector damage_bound_change;
-    /// b = M_L zeta_{n-1}/k + (phi_{n-1}, psi): as assembled (with ghost
-    /// entries) and owned.
-    TrilinosWrappers::MPI::Vector damage_load_assembly;
-    TrilinosWrappers::MPI::Vector damage_load;
-    /// The multipliers b - K zeta: owned and ghosted.
-    TrilinosWrappers::MPI::Vector damage_residual_owned;
-    TrilinosWrappers::MPI::Vector damage_residual;
-    TrilinosWrappers::MPI::Vector lumped_mass;
-    /// For each locally owned cell (by active cell index), per damage shape
-    /// function: its Gauss-Lobatto mass int_K psi_a, and the position of its
-    /// node in the local storage of the ghosted vector damage. Set once per
-    /// mesh by setup_mass_and_bounds(), read by the damage load of every
-    /// step, which then needs no FEValues and no index lookups.
-    std::vector<double>       damage_cell_mass;
-    std::vector<unsigned int> damage_cell_positions;
-    /// The same nodes' positions in the owned vector damage_load, for the
-    /// cells whose damage nodes are all owned and not hanging (whose load
-    /// goes there directly); -1 in the first entry of the other cells.
-    std::vector<int> damage_cell_owned;
-    unsigned int     last_damage_iterations = 0;
-    /// How many whole rings of nodes the front of the upper damage bound
-    /// moved in the previous step (DamageBounds::rings_moved()): the next
-    /// step frees as many ahead of it.
-    unsigned int damage_rings_ahead   = 0;
-    double       last_damage_clip     = 0;
-    double       max_damage_violation = 0;
+    /// The damage problem, step 4 (damage scenes only).
+    std::unique_ptr<DamageProblem<dim>> damage_problem;
 
     Statistics   statistics;
     unsigned int last_linear_iterations     = 0;
