@@ -56,8 +56,7 @@ namespace VPContact
     IncrementPredictor::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
-    MeshRefinement<dim>::declare_parameters(prm);
-    ReferenceSolution::declare_parameters(prm);
+    ConvergenceStudy<dim>::declare_parameters(prm);
     Checkpointing::declare_parameters(prm);
   }
 
@@ -95,12 +94,12 @@ namespace VPContact
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
-    mesh_refinement.parse_parameters(prm);
+    convergence_study.parse_parameters(prm,
+                                       output_writer.directory(),
+                                       time_discretization);
     geometry.set_finest_refinements(
-      mesh_refinement.finest_refinements(geometry.global_refinements()));
-    reference_solution.parse_parameters(prm, output_writer.directory());
-    reference_solution.check_time_step(time_discretization.step_size(),
-                                       time_discretization.end_time());
+      convergence_study.refinement().finest_refinements(
+        geometry.global_refinements()));
     checkpointing.parse_parameters(prm);
     if (damage_model.is_active())
       damage_problem
@@ -120,11 +119,11 @@ namespace VPContact
     // A checkpoint holds one run's state; the state of a sequence of cycles
     // (the table so far, the indicators of the current cycle) is not in it.
     AssertThrow(
-      mesh_refinement.n_cycles() == 1
+      convergence_study.n_cycles() == 1
         || (!checkpointing.writes_periodically() && !checkpointing.resume()),
       ExcMessage("Checkpoint: runs with refinement cycles (Mesh "
                  "refinement/Number of cycles = "
-                 + std::to_string(mesh_refinement.n_cycles())
+                 + std::to_string(convergence_study.n_cycles())
                  + ") are not checkpointed in this release. Set "
                    "Checkpoint/Every steps = 0, Checkpoint/Every seconds = 0 "
                    "and Resume from checkpoint = false, or run the mesh of "
@@ -184,9 +183,8 @@ namespace VPContact
     output_writer.prepare_directory(mpi_communicator);
     checkpointing.check_folders(output_writer.directory(), mpi_communicator);
     make_mesh();
-    if (reference_solution.compares())
-      reference_solution.read_index();
-    for (unsigned int cycle = 0; cycle < mesh_refinement.n_cycles(); ++cycle)
+    convergence_study.prepare();
+    for (unsigned int cycle = 0; cycle < convergence_study.n_cycles(); ++cycle)
       {
         if (cycle > 0)
           refine_mesh();
@@ -194,7 +192,10 @@ namespace VPContact
         if (stopped_on_signal)
           return;
       }
-    print_convergence_table();
+    pcout << convergence_study.table_text(
+      output_writer.base_directory(),
+      output_writer.deterministic_screen_output())
+          << std::flush;
   }
 
 
@@ -228,24 +229,23 @@ namespace VPContact
 
     // Adaptive cycles judge the mesh by indicators over the whole run (see
     // ErrorIndicator); the last cycle has no next mesh to choose.
-    const bool indicators = mesh_refinement.needs_indicators()
-                            && cycle + 1 < mesh_refinement.n_cycles();
+    const bool indicators  = convergence_study.needs_indicators();
     const auto finish_step = [&](const unsigned int n, const double wall) {
       postprocess_step(n, wall);
       if (indicators)
         {
           TimerOutput::Scope t(computing_timer, "Error indicators");
-          error_indicator.accumulate(dof_handler,
-                                     solution,
-                                     damage_model.is_active(),
-                                     material.youngs_modulus());
+          convergence_study.indicator().accumulate(dof_handler,
+                                                   solution,
+                                                   damage_model.is_active(),
+                                                   material.youngs_modulus());
         }
     };
 
     // From here on SIGINT/SIGTERM/SIGUSR1 stop a single run at the end of a
     // step, with a checkpoint (runs with cycles are not checkpointed).
     const auto signal_catcher
-      = (checkpointing.stops_on_signal() && mesh_refinement.n_cycles() == 1 ?
+      = (checkpointing.stops_on_signal() && convergence_study.n_cycles() == 1 ?
            std::make_unique<StopSignalCatcher>() :
            nullptr);
     try
@@ -279,7 +279,13 @@ namespace VPContact
     if (output_writer.report_solve_floor())
       report_solve_floor();
     timer.stop();
-    finish_cycle(cycle, timer.wall_time() - diagnostics_time);
+    convergence_study.finish_cycle(triangulation,
+                                   dof_handler.n_dofs(),
+                                   time_discretization,
+                                   timer.wall_time()
+                                     - convergence_study.diagnostics_time(),
+                                   output_writer.base_directory(),
+                                   mpi_communicator);
   }
 
 

@@ -254,7 +254,13 @@ namespace VPContact
                                      line,
                                      measures.damaged_fraction);
     add_verification_statistics(line, time, u_max, components);
-    add_reference_statistics(line, n);
+    convergence_study.add_reference_statistics(
+      n,
+      time_discretization,
+      [this, n]() { return make_snapshot(time_discretization.time(n)); },
+      statistics,
+      line,
+      mpi_communicator);
     if (friction_active)
       add_friction_statistics(line);
     if (!output_writer.deterministic_screen_output() && n > 0)

@@ -6,7 +6,7 @@
 #include <vpcontact/boundary_conditions.h>
 #include <vpcontact/cell_kinematics.h>
 #include <vpcontact/checkpointing.h>
-#include <vpcontact/convergence_table.h>
+#include <vpcontact/convergence_study.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/damage_problem.h>
 #include <vpcontact/elastic_material.h>
@@ -15,10 +15,8 @@
 #include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
 #include <vpcontact/linear_solver.h>
-#include <vpcontact/mesh_refinement.h>
 #include <vpcontact/output_writer.h>
 #include <vpcontact/quadrature_history.h>
-#include <vpcontact/reference_solution.h>
 #include <vpcontact/statistics.h>
 #include <vpcontact/time_discretization.h>
 #include <vpcontact/tresca_friction.h>
@@ -52,8 +50,8 @@ namespace VPContact
    *
    * The implementation is split by concern:
    * - simulator.cc: parameters, construction, the time loop, one step;
-   * - simulator_cycles.cc: refinement cycles, error indicators, snapshots
-   *   and errors against a reference, the convergence table;
+   * - simulator_cycles.cc: the start of a refinement cycle, the next mesh,
+   *   the snapshot that ConvergenceStudy compares with a reference;
    * - simulator_setup.cc: mesh, degrees of freedom, constraints, sparsity,
    *   quadrature point storage;
    * - simulator_assembly.cc: the stiffness matrix (once per mesh) and the
@@ -176,14 +174,8 @@ namespace VPContact
     start_cycle(const unsigned int cycle);
     void
     refine_mesh();
-    void
-    finish_cycle(const unsigned int cycle, const double wall_time);
     Snapshot<dim>
     make_snapshot(const double time) const;
-    void
-    add_reference_statistics(std::string &line, const unsigned int n);
-    void
-    print_convergence_table() const;
 
     // simulator_setup.cc
     void
@@ -318,23 +310,10 @@ namespace VPContact
     IncrementPredictor     increment_predictor;
     OutputWriter<dim>      output_writer;
     Verification<dim>      verification;
-    MeshRefinement<dim>    mesh_refinement;
-    ErrorIndicator<dim>    error_indicator;
-    ReferenceSolution      reference_solution;
-    ConvergenceTable       convergence_table;
-    /// The equivalent mesh size of the first cycle (for k proportional to h).
-    double first_mesh_size = 0;
+    ConvergenceStudy<dim>  convergence_study;
     /// The diagonal of the body's bounding box, the scale of the
     /// displacement safeguard in check_finite().
-    double body_size = 0;
-    /// The errors against the reference in the current cycle.
-    ErrorNorms   max_error, final_error;
-    double       max_error_sum  = 0;
-    unsigned int compared_times = 0;
-    unsigned int current_cycle  = 0;
-    /// Time spent on comparisons and snapshots in this cycle, which is not
-    /// counted as the run's time.
-    double        diagnostics_time = 0;
+    double        body_size = 0;
     Checkpointing checkpointing;
     /// The checkpoint a resumed run reads (found by load_checkpoint_mesh()).
     CheckpointMetadata resumed_checkpoint;
