@@ -365,8 +365,8 @@ namespace VPContact
   Simulator<dim>::solve_increment(const double time,
                                   const bool   with_viscoplastic_rate)
   {
-    if (friction_active)
-      friction_active_set.set_bounds(friction, time);
+    if (friction_problem)
+      friction_problem->begin_step(time);
     if (boundary_conditions.has_prescribed_displacement())
       make_constraints(time, &solution);
 
@@ -376,8 +376,7 @@ namespace VPContact
     // sets; stop when no node changes. The sets of the previous step are
     // the start (warm start). The matrix changes only when a node enters or
     // leaves the stick set; then it is reassembled with the new constraints.
-    last_active_set_iterations = 0;
-    last_linear_iterations     = 0;
+    last_linear_iterations = 0;
     // The first start vector: the increments of the last steps
     // extrapolated (see IncrementPredictor); the active-set iterations of
     // a step then start from the previous iterate.
@@ -386,8 +385,8 @@ namespace VPContact
     for (unsigned int iteration = 1;; ++iteration)
       {
         assemble_rhs(time, with_viscoplastic_rate);
-        if (friction_active)
-          friction_active_set.add_slip_forces(constraints, rhs);
+        if (friction_problem)
+          friction_problem->add_slip_forces(constraints, rhs);
         {
           TimerOutput::Scope t(computing_timer, "Solve");
           // The displacement entries lead the local entries of the full
@@ -403,16 +402,15 @@ namespace VPContact
           constraints.distribute(increment_owned);
         }
         increment = increment_owned;
-        if (!friction_active)
+        if (!friction_problem)
           break;
 
-        last_active_set_iterations = iteration;
-        assemble_residual();
         const auto changes
-          = friction_active_set.update(residual,
-                                       increment,
-                                       material.youngs_modulus(),
-                                       friction.complementarity_factor());
+          = friction_problem->update(increment,
+                                     material.youngs_modulus(),
+                                     [this](const auto &cells, auto &residual) {
+                                       assemble_residual(cells, residual);
+                                     });
         if (changes.n_changed == 0)
           break;
         AssertThrow(

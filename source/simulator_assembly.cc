@@ -263,7 +263,9 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::assemble_residual()
+  Simulator<dim>::assemble_residual(
+    const std::vector<typename DoFHandler<dim>::active_cell_iterator> &cells,
+    TrilinosWrappers::MPI::Vector &residual) const
   {
     TimerOutput::Scope t(computing_timer, "Assemble residual");
 
@@ -272,8 +274,9 @@ namespace VPContact
     // increment, without condensing the constraints: at a contact node its
     // tangential part is the friction force (lambda_i m_i), its normal part
     // the reaction of the foundation. Loads are at the time of the last
-    // assemble_rhs(). Only those entries are read, so only the cells with a
-    // contact node are visited: the other entries of r are incomplete.
+    // assemble_rhs(). Only those entries are read, so only @p cells, those
+    // with a contact node, are visited: the other entries of r are
+    // incomplete. The caller compresses @p residual.
     AssemblyScratch                  scratch(fe, quadrature);
     FEValues<dim>                   &fe_values      = scratch.fe_values;
     FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
@@ -283,8 +286,7 @@ namespace VPContact
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
 
-    residual_assembly = 0.;
-    for (const auto &cell : contact_cells)
+    for (const auto &cell : cells)
       {
         cell_residual = 0.;
         fe_values.reinit(cell);
@@ -301,10 +303,8 @@ namespace VPContact
           }
         add_cell_loads(cell, fe_values, fe_face_values, cell_residual);
         cell->get_dof_indices(dof_indices);
-        residual_assembly.add(dof_indices, cell_residual);
+        residual.add(dof_indices, cell_residual);
       }
-    residual_assembly.compress(VectorOperation::add);
-    residual = residual_assembly;
   }
 
 

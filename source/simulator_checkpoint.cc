@@ -47,13 +47,15 @@ namespace VPContact
     // the same bits as the uninterrupted one.
     TrilinosWrappers::MPI::Vector sets_owned(locally_owned_dofs,
                                              mpi_communicator);
-    if (friction_active)
-      friction_active_set.write_state(sets_owned);
-    // Scenes without damage keep the damage counters at 0.
-    std::map<std::string, double> damage_counters{{"max_damage_violation", 0.},
-                                                  {"damage_rings_ahead", 0.}};
+    // Scenes without friction or damage keep their counters at 0.
+    std::map<std::string, double> physics_counters{{"max_friction_violation",
+                                                    0.},
+                                                   {"max_damage_violation", 0.},
+                                                   {"damage_rings_ahead", 0.}};
+    if (friction_problem)
+      friction_problem->write_checkpoint(sets_owned, physics_counters);
     if (damage_problem)
-      damage_problem->write_checkpoint(sets_owned, damage_counters);
+      damage_problem->write_checkpoint(sets_owned, physics_counters);
     TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
                                        locally_relevant_dofs,
                                        mpi_communicator);
@@ -90,10 +92,9 @@ namespace VPContact
     metadata.statistics_csv = statistics.to_csv();
     // The checkpoint lists the field outputs on disk: the last one must be.
     output_writer.finish_field_output(mpi_communicator);
-    metadata.field_outputs                      = output_writer.field_outputs();
-    metadata.counters                           = verification.running_maxima();
-    metadata.counters["max_friction_violation"] = max_friction_violation;
-    metadata.counters.insert(damage_counters.begin(), damage_counters.end());
+    metadata.field_outputs = output_writer.field_outputs();
+    metadata.counters      = verification.running_maxima();
+    metadata.counters.insert(physics_counters.begin(), physics_counters.end());
     metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(
@@ -217,9 +218,18 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
                                        locally_relevant_dofs,
                                        mpi_communicator);
-    sets = sets_owned;
-    if (friction_active)
-      friction_active_set.read_state(sets);
+    sets               = sets_owned;
+    const auto counter = [&](const std::string &name) {
+      const auto found = checkpoint.counters.find(name);
+      AssertThrow(found != checkpoint.counters.end(),
+                  ExcMessage("The checkpoint in " + folder + " has no counter "
+                             + name + " in its checkpoint.json."));
+      return found->second;
+    };
+    if (friction_problem)
+      friction_problem->read_checkpoint(sets, counter);
+    if (damage_problem)
+      damage_problem->read_checkpoint(sets_owned, counter);
     make_constraints(time_discretization.time(checkpoint.step), &solution);
 
     // What the run has written so far, as it stood at the checkpoint: the
@@ -230,16 +240,6 @@ namespace VPContact
     output_writer.restore_field_outputs(checkpoint.field_outputs,
                                         mpi_communicator);
     verification.restore_running_maxima(checkpoint.counters);
-    const auto counter = [&](const std::string &name) {
-      const auto found = checkpoint.counters.find(name);
-      AssertThrow(found != checkpoint.counters.end(),
-                  ExcMessage("The checkpoint in " + folder + " has no counter "
-                             + name + " in its checkpoint.json."));
-      return found->second;
-    };
-    max_friction_violation = counter("max_friction_violation");
-    if (damage_problem)
-      damage_problem->read_checkpoint(sets_owned, counter);
     increment_predictor.recorded(0) = increment_owned;
     increment_predictor.set_n_recorded(
       static_cast<unsigned int>(counter("recorded_increments")));

@@ -39,10 +39,8 @@ namespace VPContact
     time_discretization.set_halvings(
       convergence_study.start_cycle(cycle, triangulation));
 
-    statistics                 = Statistics();
-    last_linear_iterations     = 0;
-    last_active_set_iterations = 0;
-    max_friction_violation     = 0;
+    statistics             = Statistics();
+    last_linear_iterations = 0;
     verification.restore_running_maxima({}); // each cycle's summary is its own
     computing_timer.reset();
   }

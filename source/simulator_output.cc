@@ -145,7 +145,7 @@ namespace VPContact
           << "  contact: "
           << (!boundary_conditions.has_contact_boundary() ?
                 "none" :
-              friction_active ?
+              friction_problem ?
                 "bilateral (u.nu = 0) with Tresca friction, primal-dual "
                 "active set" :
                 "bilateral (u.nu = 0), frictionless (friction bound 0)")
@@ -261,14 +261,15 @@ namespace VPContact
       statistics,
       line,
       mpi_communicator);
-    if (friction_active)
-      add_friction_statistics(line);
+    if (friction_problem)
+      friction_problem->add_statistics(statistics, line);
     if (!output_writer.deterministic_screen_output() && n > 0)
-      line += "  CG its = " + std::to_string(last_linear_iterations)
-              + (friction_active ?
-                   "  AS its = " + std::to_string(last_active_set_iterations) :
-                   "")
-              + format("  (%.3f s)", step_wall_time);
+      line
+        += "  CG its = " + std::to_string(last_linear_iterations)
+           + (friction_problem ?
+                "  AS its = " + std::to_string(friction_problem->iterations()) :
+                "")
+           + format("  (%.3f s)", step_wall_time);
     pcout << line << std::endl;
 
     if (write)
@@ -344,28 +345,6 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::add_friction_statistics(std::string &line)
-  {
-    const auto [n_stick, n_slip] = friction_active_set.count();
-    const double utilisation     = friction_active_set.max_utilisation();
-    // Relative to the largest g; slip counts where |w_i| exceeds 1e-8 of
-    // the largest tangential increment.
-    const double violation = friction_active_set.max_violation(1e-8);
-    statistics.add_value("active_set_iterations", last_active_set_iterations);
-    statistics.add_value("stick_nodes", n_stick);
-    statistics.add_value("slip_nodes", n_slip);
-    statistics.add_value("friction_utilisation", utilisation);
-    statistics.add_value("friction_violation", violation);
-    max_friction_violation = std::max(max_friction_violation, violation);
-    line += "  stick/slip = " + std::to_string(n_stick) + "/"
-            + std::to_string(n_slip)
-            + "  max|sigma_t|/g = " + format("%.4f", utilisation);
-  }
-
-
-
-  template <int dim>
-  void
   Simulator<dim>::write_fields(const unsigned int                 n,
                                const Vector<double>              &von_mises,
                                const std::vector<Vector<double>> &components)
@@ -403,11 +382,11 @@ namespace VPContact
     // vector.
     TrilinosWrappers::MPI::BlockVector contact_blocks;
     const ContactFields<dim>           contact_fields;
-    if (friction_active)
+    if (friction_problem)
       {
         TrilinosWrappers::MPI::Vector contact(solution_owned);
         contact = 0.;
-        friction_active_set.fill_output(contact);
+        friction_problem->fill_output(contact);
         contact_blocks = blocks(contact);
         data_out.add_data_vector(contact_blocks, contact_fields);
       }
@@ -439,12 +418,13 @@ namespace VPContact
                "violation "
             << damage_problem->max_violation() << " (exactly 0: "
             << (damage_problem->max_violation() == 0. ? "yes" : "NO") << ")\n";
-    if (friction_active)
+    if (friction_problem)
       pcout << "Tresca conditions at every contact node and step: largest "
                "violation "
-            << format("%.1e", max_friction_violation)
+            << format("%.1e", friction_problem->max_violation())
             << " of max g (holds to 1e-6: "
-            << (max_friction_violation < 1e-6 ? "yes" : "NO") << ")\n";
+            << (friction_problem->max_violation() < 1e-6 ? "yes" : "NO")
+            << ")\n";
     pcout << "Run complete: " << time_discretization.n_steps()
           << " steps; statistics in "
           << "statistics.csv";

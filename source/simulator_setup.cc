@@ -34,8 +34,11 @@ namespace VPContact
                                  boundary_conditions.contact_boundary_ids(),
                                  times);
         // g = 0 everywhere is frictionless sliding: no active set at all.
-        friction_active = (g_max > 0);
-        AssertThrow(!(friction_active && viscoplasticity.implicit()),
+        if (g_max > 0)
+          friction_problem
+            = std::make_unique<FrictionProblem<dim>>(friction,
+                                                     mpi_communicator);
+        AssertThrow(!(friction_problem && viscoplasticity.implicit()),
                     ExcMessage(
                       "Viscoplasticity/Time integration = implicit is not "
                       "combined with Tresca friction in this release (the "
@@ -44,7 +47,7 @@ namespace VPContact
                       + "). Use the explicit step with a Time step within its "
                         "stability limit, or a frictionless contact "
                         "(Contact/Friction bound = 0)."));
-        AssertThrow(dim == 2 || !friction_active,
+        AssertThrow(dim == 2 || !friction_problem,
                     ExcMessage(
                       "Contact/Friction bound: Tresca friction is implemented "
                       "in 2D only (in 3D the slip direction needs the "
@@ -66,7 +69,8 @@ namespace VPContact
     TimerOutput::Scope t(computing_timer, "Setup");
     // Sets of an earlier mesh (a previous refinement cycle) name degrees of
     // freedom that no longer exist; the constraints below must not see them.
-    friction_active_set = FrictionActiveSet<dim>();
+    if (friction_problem)
+      friction_problem->clear();
     dof_handler.distribute_dofs(fe);
     // Numbered by blocks, as in step-32 and step-55: all displacement
     // degrees of freedom first, node by node, then all damage ones. On each
@@ -110,38 +114,14 @@ namespace VPContact
     // The contact nodes are read off the constraints without friction; the
     // sparsity pattern above, built with those, also holds every pattern
     // with more nodes constrained. All nodes start in the stick set.
-    if (friction_active)
+    if (friction_problem)
       {
-        friction_active_set.setup(dof_handler,
-                                  constraints,
-                                  boundary_conditions.contact_boundary_ids(),
-                                  locally_relevant_dofs);
+        friction_problem->setup(dof_handler,
+                                constraints,
+                                boundary_conditions.contact_boundary_ids(),
+                                locally_owned_dofs,
+                                locally_relevant_dofs);
         make_constraints(0., nullptr);
-
-        // The multipliers are read at the contact nodes only, so the
-        // residual is assembled only on the cells that hold one.
-        contact_cells.clear();
-        const IndexSet contact_dofs
-          = friction_active_set.node_dofs(dof_handler.n_dofs());
-        std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(dof_indices);
-              if (std::any_of(dof_indices.begin(),
-                              dof_indices.end(),
-                              [&](const auto dof) {
-                                return contact_dofs.is_element(dof);
-                              }))
-                contact_cells.push_back(cell);
-            }
-        residual_assembly.reinit(locally_owned_dofs,
-                                 locally_relevant_dofs,
-                                 mpi_communicator,
-                                 true);
-        residual.reinit(locally_owned_dofs,
-                        locally_relevant_dofs,
-                        mpi_communicator);
       }
 
     // With all contact nodes in the stick set, the constraints now hold
@@ -182,8 +162,8 @@ namespace VPContact
                                          constraints,
                                          time,
                                          previous);
-    if (friction_active)
-      friction_active_set.add_stick_constraints(constraints);
+    if (friction_problem)
+      friction_problem->add_stick_constraints(constraints);
     constraints.close();
   }
 

@@ -10,7 +10,7 @@
 #include <vpcontact/damage_model.h>
 #include <vpcontact/damage_problem.h>
 #include <vpcontact/elastic_material.h>
-#include <vpcontact/friction_active_set.h>
+#include <vpcontact/friction_problem.h>
 #include <vpcontact/geometry.h>
 #include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
@@ -202,7 +202,9 @@ namespace VPContact
     void
     assemble_rhs(const double time, const bool with_viscoplastic_rate);
     void
-    assemble_residual();
+    assemble_residual(
+      const std::vector<typename DoFHandler<dim>::active_cell_iterator> &cells,
+      TrilinosWrappers::MPI::Vector &residual) const;
     void
     add_cell_loads(const typename DoFHandler<dim>::active_cell_iterator &cell,
                    const FEValues<dim> &fe_values,
@@ -266,8 +268,6 @@ namespace VPContact
     void
     postprocess_step(const unsigned int n, const double step_wall_time);
     void
-    add_friction_statistics(std::string &line);
-    void
     add_verification_statistics(std::string                       &line,
                                 const double                       time,
                                 const double                       u_max,
@@ -301,16 +301,15 @@ namespace VPContact
     DamageModel<dim>                      damage_model;
     BoundaryConditions<dim>               boundary_conditions;
     TrescaFriction<dim>                   friction;
-    /// Whether the scene has a contact boundary with a friction bound > 0.
-    bool                   friction_active = false;
-    FrictionActiveSet<dim> friction_active_set;
-    InitialConditions      initial_conditions;
-    TimeDiscretization     time_discretization;
-    LinearSolver           linear_solver;
-    IncrementPredictor     increment_predictor;
-    OutputWriter<dim>      output_writer;
-    Verification<dim>      verification;
-    ConvergenceStudy<dim>  convergence_study;
+    /// Tresca friction (scenes with a contact boundary and a bound g > 0).
+    std::unique_ptr<FrictionProblem<dim>> friction_problem;
+    InitialConditions                     initial_conditions;
+    TimeDiscretization                    time_discretization;
+    LinearSolver                          linear_solver;
+    IncrementPredictor                    increment_predictor;
+    OutputWriter<dim>                     output_writer;
+    Verification<dim>                     verification;
+    ConvergenceStudy<dim>                 convergence_study;
     /// The diagonal of the body's bounding box, the scale of the
     /// displacement safeguard in check_finite().
     double        body_size = 0;
@@ -353,13 +352,6 @@ namespace VPContact
     /// block).
     TrilinosWrappers::MPI::Vector newton_update;
 
-    /// r = b - A(du), uncondensed, for the friction multipliers: a vector
-    /// that assembly writes (with ghost entries), and a ghosted copy.
-    TrilinosWrappers::MPI::Vector residual_assembly;
-    TrilinosWrappers::MPI::Vector residual;
-    /// The locally owned cells with a contact node, where r is assembled.
-    std::vector<typename DoFHandler<dim>::active_cell_iterator> contact_cells;
-
     StressHistory<dim> stress_history;
 
     /// Shape gradients, points and vector positions of every locally owned
@@ -374,10 +366,7 @@ namespace VPContact
     std::unique_ptr<DamageProblem<dim>> damage_problem;
 
     Statistics   statistics;
-    unsigned int last_linear_iterations     = 0;
-    unsigned int last_active_set_iterations = 0;
-    /// The largest violation of the discrete Tresca conditions so far.
-    double max_friction_violation = 0;
+    unsigned int last_linear_iterations = 0;
   };
 } // namespace VPContact
 
