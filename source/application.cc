@@ -130,6 +130,86 @@ namespace VPContact
                   << std::endl;
       return 1;
     }
+
+
+
+    // --resume may stand before or after the scene: it is taken out of
+    // @p args, so that the rest of the command line is read without it, and
+    // the return value says whether it was there.
+    bool
+    take_resume_flag(std::vector<std::string> &args)
+    {
+      const auto resume_flag
+        = std::remove(args.begin(), args.end(), std::string("--resume"));
+      const bool resume = (resume_flag != args.end());
+      args.erase(resume_flag, args.end());
+      return resume;
+    }
+
+
+
+    // ParameterHandler's messages name the file with the path it was given;
+    // this shows it relative to the parameter file's folder, as the user
+    // wrote it (when @p args is a scene alone).
+    std::string
+    shorten_paths(std::string message, const std::vector<std::string> &args)
+    {
+      if (args.size() == 1)
+        {
+          const std::string folder
+            = std::filesystem::path(args[0]).parent_path().string();
+          for (std::size_t at;
+               !folder.empty()
+               && (at = message.find(folder + "/")) != std::string::npos;)
+            message.erase(at, folder.size() + 1);
+        }
+      return message;
+    }
+
+
+
+    // Do what the command line @p args (without --resume) asks: print the
+    // usage or the parameters, or run the scene, and return the exit
+    // status. The scene's text goes to @p file as soon as it is read, so
+    // that the caller's messages about its lines name the file and line
+    // they came from.
+    int
+    run_command_line(const std::vector<std::string> &args,
+                     const bool                      resume,
+                     const MPI_Comm                  communicator,
+                     ParameterFile                  &file)
+    {
+      const bool rank_zero
+        = Utilities::MPI::this_mpi_process(communicator) == 0;
+      AssertThrow(!(resume && args.empty()),
+                  ExcMessage("--resume needs the scene to continue: "
+                             "vpcontact --resume SCENE.prm."));
+      if (args.empty() || args[0] == "--help" || args[0] == "-h")
+        {
+          if (rank_zero)
+            print_usage(args.empty() ? std::cerr : std::cout);
+          return args.empty() ? 1 : 0;
+        }
+      if (args[0] == "--print-parameters")
+        {
+          const std::string dim = (args.size() > 1 ? args[1] : "2");
+          AssertThrow(dim == "2" || dim == "3",
+                      ExcMessage("--print-parameters takes 2 or 3, not '" + dim
+                                 + "'."));
+          if (rank_zero)
+            (dim == "2" ? print_parameters<2>() : print_parameters<3>());
+          return 0;
+        }
+      AssertThrow(args.size() == 1 && args[0].rfind("--", 0) != 0,
+                  ExcMessage("Unexpected arguments. Usage: vpcontact "
+                             "SCENE.prm (see vpcontact --help)."));
+
+      const std::string &filename = args[0];
+      file                        = read_parameter_file(filename);
+      return (read_dimension(file, filename) == 2 ?
+                run_scene<2>(file, filename, resume, communicator) :
+                run_scene<3>(file, filename, resume, communicator));
+    }
   } // namespace
 
 
@@ -143,67 +223,20 @@ namespace VPContact
     // every rank.
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
     set_blas_threads(MultithreadInfo::n_threads());
-    const MPI_Comm communicator = MPI_COMM_WORLD;
-    const bool rank_zero = Utilities::MPI::this_mpi_process(communicator) == 0;
-    // --resume may stand before or after the scene; the rest of the command
-    // line is read without it.
+    const MPI_Comm           communicator = MPI_COMM_WORLD;
     std::vector<std::string> args(argv + 1, argv + argc);
-    const auto               resume_flag
-      = std::remove(args.begin(), args.end(), std::string("--resume"));
-    const bool resume = (resume_flag != args.end());
-    args.erase(resume_flag, args.end());
-    // ParameterHandler's messages name the file with the path it was given;
-    // show it relative to the parameter file's folder, as the user wrote it.
-    const auto shorten_paths = [&](std::string message) {
-      if (args.size() == 1)
-        {
-          const std::string folder
-            = std::filesystem::path(args[0]).parent_path().string();
-          for (std::size_t at;
-               !folder.empty()
-               && (at = message.find(folder + "/")) != std::string::npos;)
-            message.erase(at, folder.size() + 1);
-        }
-      return message;
-    };
+    const bool               resume = take_resume_flag(args);
 
     // The scene's text, once read: messages about its lines name the file
     // and line they came from.
     ParameterFile file;
     try
       {
-        AssertThrow(!(resume && args.empty()),
-                    ExcMessage("--resume needs the scene to continue: "
-                               "vpcontact --resume SCENE.prm."));
-        if (args.empty() || args[0] == "--help" || args[0] == "-h")
-          {
-            if (rank_zero)
-              print_usage(args.empty() ? std::cerr : std::cout);
-            return args.empty() ? 1 : 0;
-          }
-        if (args[0] == "--print-parameters")
-          {
-            const std::string dim = (args.size() > 1 ? args[1] : "2");
-            AssertThrow(dim == "2" || dim == "3",
-                        ExcMessage("--print-parameters takes 2 or 3, not '"
-                                   + dim + "'."));
-            if (rank_zero)
-              (dim == "2" ? print_parameters<2>() : print_parameters<3>());
-            return 0;
-          }
-        AssertThrow(args.size() == 1 && args[0].rfind("--", 0) != 0,
-                    ExcMessage("Unexpected arguments. Usage: vpcontact "
-                               "SCENE.prm (see vpcontact --help)."));
-
-        const std::string &filename = args[0];
-        file                        = read_parameter_file(filename);
-        return (read_dimension(file, filename) == 2 ?
-                  run_scene<2>(file, filename, resume, communicator) :
-                  run_scene<3>(file, filename, resume, communicator));
+        return run_command_line(args, resume, communicator, file);
       }
     catch (const std::exception &e)
       {
-        return report_error(shorten_paths(file.locate(error_message(e))),
+        return report_error(shorten_paths(file.locate(error_message(e)), args),
                             communicator);
       }
     // Exceptions that are not std::exceptions come from the libraries

@@ -37,6 +37,126 @@ namespace VPContact
         s += (s.empty() ? "" : ",") + std::to_string(id);
       return "{" + s + "}";
     }
+
+    // Read a list of id:components pairs, such as '0:x, 2:y', into the
+    // displacement components each boundary id names in @p ids (and their
+    // text in @p text), refusing an id listed twice.
+    template <int dim>
+    void
+    parse_component_map(const ParameterHandler                      &prm,
+                        const std::string                           &section,
+                        const std::string                           &entry,
+                        std::map<types::boundary_id, ComponentMask> &ids,
+                        std::map<types::boundary_id, std::string>   &text)
+    {
+      ids.clear();
+      text.clear();
+      for (const std::string &pair :
+           Utilities::split_string_list(prm.get(entry)))
+        {
+          const auto key_value        = Utilities::split_string_list(pair, ':');
+          const types::boundary_id id = Utilities::string_to_int(key_value[0]);
+          std::vector<bool>        mask(dim, false);
+          for (const char c : key_value[1])
+            mask[c - 'x'] = true;
+          VPContactCheckParameter(ids.emplace(id, ComponentMask(mask)).second,
+                                  section + "/" + entry,
+                                  prm.get(entry),
+                                  "boundary id " + std::to_string(id)
+                                    + " is listed twice.");
+          text[id] = key_value[1];
+        }
+    }
+
+    // Refuse a boundary id that is in more than one of the lists: two
+    // conditions on the same face would make the problem ill posed or
+    // silently drop one of them. An id belongs to the first of the lists
+    // (in the order below) that has it; the message names a later one.
+    void
+    check_one_part_per_id(
+      const ParameterHandler                            &prm,
+      const std::string                                 &section,
+      const std::set<types::boundary_id>                &clamped_ids,
+      const std::map<types::boundary_id, ComponentMask> &roller_ids,
+      const std::map<types::boundary_id, ComponentMask> &prescribed_ids,
+      const std::set<types::boundary_id>                &traction_ids,
+      const std::set<types::boundary_id>                &contact_ids)
+    {
+      std::map<types::boundary_id, std::string> owner;
+      const auto                                claim
+        = [&](const types::boundary_id id, const std::string &entry) {
+            const auto [it, inserted] = owner.emplace(id, entry);
+            VPContactCheckParameter(inserted,
+                                    section + "/" + entry,
+                                    prm.get(entry),
+                                    "boundary id " + std::to_string(id)
+                                      + " is also in '" + it->second
+                                      + "'. A boundary id belongs to one part "
+                                        "only.");
+          };
+      for (const auto id : clamped_ids)
+        claim(id, "Clamped boundary ids");
+      for (const auto &[id, mask] : roller_ids)
+        claim(id, "Roller boundary ids");
+      for (const auto &[id, mask] : prescribed_ids)
+        claim(id, "Prescribed displacement boundary ids");
+      for (const auto id : traction_ids)
+        claim(id, "Traction boundary ids");
+      for (const auto id : contact_ids)
+        claim(id, "Contact boundary ids");
+    }
+
+    // The mask of the finite element's @p n_components components that
+    // selects the displacement components of @p displacement_mask (the
+    // element may have more components than the displacement: the damage).
+    template <int dim>
+    ComponentMask
+    on_components(const ComponentMask &displacement_mask,
+                  const unsigned int   n_components)
+    {
+      ComponentMask mask(n_components, false);
+      for (unsigned int d = 0; d < dim; ++d)
+        mask.set(d, displacement_mask[d]);
+      return mask;
+    }
+
+    // Constrain the listed components on the parts of @p prescribed_ids to
+    // the increment of a step: g(x, @p time) minus the current nodal value
+    // (of @p previous_displacement, or zero), so that u_n = g(t_n) holds
+    // exactly even if u_0 did not satisfy g(0). Degrees of freedom that are
+    // already constrained keep their constraint.
+    template <int dim>
+    void
+    add_prescribed_constraints(
+      const DoFHandler<dim>                             &dof_handler,
+      const std::map<types::boundary_id, ComponentMask> &prescribed_ids,
+      FunctionParser<dim>                               &g,
+      const double                                       time,
+      const TrilinosWrappers::MPI::Vector               *previous_displacement,
+      AffineConstraints<double>                         &constraints)
+    {
+      const unsigned int n_components = dof_handler.get_fe().n_components();
+      g.set_time(time);
+      const DisplacementFunction<dim> g_on_all_components(g, n_components);
+      std::map<types::global_dof_index, double> values;
+      for (const auto &[id, mask] : prescribed_ids)
+        VectorTools::interpolate_boundary_values(
+          dof_handler,
+          id,
+          g_on_all_components,
+          values,
+          on_components<dim>(mask, n_components));
+      for (const auto &[dof, value] : values)
+        if (constraints.can_store_line(dof) && !constraints.is_constrained(dof))
+          {
+            constraints.add_line(dof);
+            constraints.set_inhomogeneity(dof,
+                                          value
+                                            - (previous_displacement ?
+                                                 (*previous_displacement)(dof) :
+                                                 0.));
+          }
+    }
   } // namespace
 
 
@@ -114,58 +234,23 @@ namespace VPContact
     clamped_ids  = parse_id_list(prm, "Clamped boundary ids");
     traction_ids = parse_id_list(prm, "Traction boundary ids");
     contact_ids  = parse_id_list(prm, "Contact boundary ids");
-
-    const auto parse_component_map =
-      [&](const std::string                           &entry,
-          std::map<types::boundary_id, ComponentMask> &ids,
-          std::map<types::boundary_id, std::string>   &text) {
-        ids.clear();
-        text.clear();
-        for (const std::string &pair :
-             Utilities::split_string_list(prm.get(entry)))
-          {
-            const auto key_value = Utilities::split_string_list(pair, ':');
-            const types::boundary_id id
-              = Utilities::string_to_int(key_value[0]);
-            std::vector<bool> mask(dim, false);
-            for (const char c : key_value[1])
-              mask[c - 'x'] = true;
-            VPContactCheckParameter(ids.emplace(id, ComponentMask(mask)).second,
-                                    section + "/" + entry,
-                                    prm.get(entry),
-                                    "boundary id " + std::to_string(id)
-                                      + " is listed twice.");
-            text[id] = key_value[1];
-          }
-      };
-    parse_component_map("Roller boundary ids", roller_ids, roller_text);
-    parse_component_map("Prescribed displacement boundary ids",
-                        prescribed_ids,
-                        prescribed_text);
-
-    // A boundary id belongs to one part only: two conditions on the same
-    // face would make the problem ill posed or silently drop one of them.
-    std::map<types::boundary_id, std::string> owner;
-    const auto claim = [&](const types::boundary_id id,
-                           const std::string       &entry) {
-      const auto [it, inserted] = owner.emplace(id, entry);
-      VPContactCheckParameter(inserted,
-                              section + "/" + entry,
-                              prm.get(entry),
-                              "boundary id " + std::to_string(id)
-                                + " is also in '" + it->second
-                                + "'. A boundary id belongs to one part only.");
-    };
-    for (const auto id : clamped_ids)
-      claim(id, "Clamped boundary ids");
-    for (const auto &[id, mask] : roller_ids)
-      claim(id, "Roller boundary ids");
-    for (const auto &[id, mask] : prescribed_ids)
-      claim(id, "Prescribed displacement boundary ids");
-    for (const auto id : traction_ids)
-      claim(id, "Traction boundary ids");
-    for (const auto id : contact_ids)
-      claim(id, "Contact boundary ids");
+    parse_component_map<dim>(prm,
+                             section,
+                             "Roller boundary ids",
+                             roller_ids,
+                             roller_text);
+    parse_component_map<dim>(prm,
+                             section,
+                             "Prescribed displacement boundary ids",
+                             prescribed_ids,
+                             prescribed_text);
+    check_one_part_per_id(prm,
+                          section,
+                          clamped_ids,
+                          roller_ids,
+                          prescribed_ids,
+                          traction_ids,
+                          contact_ids);
 
     const auto constants = parse_function_constants(prm,
                                                     section,
@@ -232,14 +317,8 @@ namespace VPContact
     // displacement components are ever selected.
     const unsigned int n_components = dof_handler.get_fe().n_components();
     const Functions::ZeroFunction<dim> zero(n_components);
-    const auto on_components = [&](const ComponentMask &displacement_mask) {
-      ComponentMask mask(n_components, false);
-      for (unsigned int d = 0; d < dim; ++d)
-        mask.set(d, displacement_mask[d]);
-      return mask;
-    };
-    const ComponentMask all_displacements
-      = on_components(ComponentMask(dim, true));
+    const ComponentMask                all_displacements
+      = on_components<dim>(ComponentMask(dim, true), n_components);
     for (const auto id : clamped_ids)
       VectorTools::interpolate_boundary_values(dof_handler,
                                                id,
@@ -247,40 +326,20 @@ namespace VPContact
                                                constraints,
                                                all_displacements);
     for (const auto &[id, mask] : roller_ids)
-      VectorTools::interpolate_boundary_values(dof_handler,
-                                               id,
-                                               zero,
-                                               constraints,
-                                               on_components(mask));
+      VectorTools::interpolate_boundary_values(
+        dof_handler,
+        id,
+        zero,
+        constraints,
+        on_components<dim>(mask, n_components));
 
-    // Prescribed displacements: the increment of a step is g(t_n) minus the
-    // current nodal value, so that u_n = g(t_n) holds exactly even if u_0
-    // did not satisfy g(0).
     if (!prescribed_ids.empty())
-      {
-        prescribed_function->set_time(time);
-        const DisplacementFunction<dim> g_on_all_components(
-          *prescribed_function,
-          n_components);
-        std::map<types::global_dof_index, double> values;
-        for (const auto &[id, mask] : prescribed_ids)
-          VectorTools::interpolate_boundary_values(dof_handler,
-                                                   id,
-                                                   g_on_all_components,
-                                                   values,
-                                                   on_components(mask));
-        for (const auto &[dof, value] : values)
-          if (constraints.can_store_line(dof)
-              && !constraints.is_constrained(dof))
-            {
-              constraints.add_line(dof);
-              constraints.set_inhomogeneity(
-                dof,
-                value
-                  - (previous_displacement ? (*previous_displacement)(dof) :
-                                             0.));
-            }
-      }
+      add_prescribed_constraints(dof_handler,
+                                 prescribed_ids,
+                                 *prescribed_function,
+                                 time,
+                                 previous_displacement,
+                                 constraints);
 
     if (!contact_ids.empty())
       VectorTools::compute_no_normal_flux_constraints(dof_handler,

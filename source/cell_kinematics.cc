@@ -9,6 +9,63 @@
 
 namespace VPContact
 {
+  namespace
+  {
+    // Throw unless every component of @p fe is the same scalar element (Q1),
+    // with dim or dim + 1 components and at most @p max_nodes shape
+    // functions each: then the displacement's and the damage's nodes
+    // coincide, and one set of scalar gradients serves all of them.
+    template <int dim>
+    void
+    check_same_scalar_elements(const FiniteElement<dim> &fe,
+                               const unsigned int        max_nodes)
+    {
+      const FiniteElement<dim> &scalar = fe.base_element(0);
+      bool same_scalar = scalar.n_components() == 1 && fe.n_components() >= dim;
+      for (unsigned int b = 0; b < fe.n_base_elements(); ++b)
+        same_scalar &= fe.base_element(b).get_name() == scalar.get_name();
+      AssertThrow(same_scalar,
+                  ExcMessage("CellKinematics expects dim or dim + 1 copies of "
+                             "one scalar element."));
+      AssertThrow(fe.base_element(0).n_dofs_per_cell() <= max_nodes,
+                  ExcMessage("CellKinematics: too many shape functions per "
+                             "component."));
+    }
+
+    // The values of the shape functions of @p scalar at the points of
+    // @p quadrature, the same on every cell: N_a(x_q) at q * n_nodes + a.
+    template <int dim>
+    std::vector<double>
+    scalar_shape_values(const FiniteElement<dim> &scalar,
+                        const Quadrature<dim>    &quadrature)
+    {
+      const unsigned int  n_nodes = scalar.n_dofs_per_cell();
+      std::vector<double> values(quadrature.size() * n_nodes);
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          values[q * n_nodes + a] = scalar.shape_value(a, quadrature.point(q));
+      return values;
+    }
+
+    // The position of the entry of degree of freedom @p dof in the local
+    // storage of a vector of @p layout. A locally owned cell's degrees of
+    // freedom are all there.
+    unsigned int
+    local_position(const Epetra_BlockMap        &layout,
+                   const types::global_dof_index dof)
+    {
+      const int position
+        = layout.LID(static_cast<TrilinosWrappers::types::int_type>(dof));
+      AssertThrow(position >= 0,
+                  ExcMessage("CellKinematics: a degree of freedom of "
+                             "a locally owned cell is not in the "
+                             "ghosted layout."));
+      return position;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   CellKinematics<dim>::reinit(const DoFHandler<dim>               &dof_handler,
@@ -16,22 +73,11 @@ namespace VPContact
                               const TrilinosWrappers::MPI::Vector &ghosted)
   {
     const FiniteElement<dim> &fe = dof_handler.get_fe();
-    // Every component is the same scalar element (Q1): the displacement's
-    // and the damage's nodes coincide, and one set of scalar gradients
-    // serves all of them.
+    check_same_scalar_elements(fe, max_nodes);
     const FiniteElement<dim> &scalar = fe.base_element(0);
-    bool same_scalar = scalar.n_components() == 1 && fe.n_components() >= dim;
-    for (unsigned int b = 0; b < fe.n_base_elements(); ++b)
-      same_scalar &= fe.base_element(b).get_name() == scalar.get_name();
-    AssertThrow(same_scalar,
-                ExcMessage("CellKinematics expects dim or dim + 1 copies of "
-                           "one scalar element."));
-    AssertThrow(fe.base_element(0).n_dofs_per_cell() <= max_nodes,
-                ExcMessage("CellKinematics: too many shape functions per "
-                           "component."));
-    n_q_points    = quadrature.size();
-    n_nodes       = scalar.n_dofs_per_cell();
-    dofs_per_cell = fe.n_dofs_per_cell();
+    n_q_points                       = quadrature.size();
+    n_nodes                          = scalar.n_dofs_per_cell();
+    dofs_per_cell                    = fe.n_dofs_per_cell();
     node_of.resize(dofs_per_cell);
     component_of.resize(dofs_per_cell);
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -39,11 +85,7 @@ namespace VPContact
         component_of[i] = fe.system_to_component_index(i).first;
         node_of[i]      = fe.system_to_component_index(i).second;
       }
-    shape_values.resize(n_q_points * n_nodes);
-    for (unsigned int q = 0; q < n_q_points; ++q)
-      for (unsigned int a = 0; a < n_nodes; ++a)
-        shape_values[q * n_nodes + a]
-          = scalar.shape_value(a, quadrature.point(q));
+    shape_values = scalar_shape_values(scalar, quadrature);
 
     const unsigned int n_cells
       = dof_handler.get_triangulation().n_active_cells();
@@ -73,15 +115,8 @@ namespace VPContact
             }
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            {
-              const int position = layout->LID(
-                static_cast<TrilinosWrappers::types::int_type>(dof_indices[i]));
-              AssertThrow(position >= 0,
-                          ExcMessage("CellKinematics: a degree of freedom of "
-                                     "a locally owned cell is not in the "
-                                     "ghosted layout."));
-              positions[c * dofs_per_cell + i] = position;
-            }
+            positions[c * dofs_per_cell + i]
+              = local_position(*layout, dof_indices[i]);
         }
   }
 

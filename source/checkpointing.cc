@@ -79,6 +79,98 @@ namespace VPContact
           return true;
       return entry == "Time/End time";
     }
+
+    // Read the checkpoint in @p folder into @p metadata, once its manifest
+    // has been checked. Returns what makes it unusable, or "".
+    std::string
+    read_candidate(const std::string &folder, CheckpointMetadata &metadata)
+    {
+      std::string problem = CheckpointManifest::check(folder);
+      if (problem.empty())
+        try
+          {
+            std::ifstream      in(folder + "/checkpoint.json");
+            std::ostringstream text;
+            text << in.rdbuf();
+            metadata = CheckpointMetadata::from_json(text.str());
+          }
+        catch (const std::exception &e)
+          {
+            problem
+              = "its checkpoint.json cannot be read: " + std::string(e.what());
+          }
+      return problem;
+    }
+
+    // The index of the usable one among the existing @p candidates with the
+    // latest step (the first of equals), its metadata in @p newest, or -1;
+    // why each unusable one is unusable goes to @p problems.
+    int
+    newest_usable(const std::vector<std::string>     &candidates,
+                  std::map<std::string, std::string> &problems,
+                  CheckpointMetadata                 &newest)
+    {
+      int chosen = -1;
+      for (unsigned int i = 0; i < candidates.size(); ++i)
+        {
+          if (!std::filesystem::is_directory(candidates[i]))
+            continue;
+          CheckpointMetadata metadata;
+          const std::string  problem = read_candidate(candidates[i], metadata);
+          if (!problem.empty())
+            problems[candidates[i]] = problem;
+          else if (chosen < 0 || metadata.step > newest.step)
+            {
+              chosen = i;
+              newest = metadata;
+            }
+        }
+      return chosen;
+    }
+
+    // Rank 0's verdict on the @p candidates, the first of which is
+    // @p folder itself, as find_checkpoint() hands it to every rank: the
+    // error that stops the run, the notes for the screen, the folder to
+    // read and its metadata as JSON.
+    std::vector<std::string>
+    checkpoint_verdict(const std::string                        &folder,
+                       const std::vector<std::string>           &candidates,
+                       const std::map<std::string, std::string> &problems,
+                       const int                                 chosen,
+                       const CheckpointMetadata                 &newest)
+    {
+      std::vector<std::string> verdict(4);
+      if (chosen < 0 && problems.empty())
+        verdict[0] = parameter_message(
+          "Checkpoint/Resume from checkpoint",
+          "true",
+          "there is no checkpoint in " + folder
+            + " (nor .new or .old next to it). Check Output/Directory and "
+              "Checkpoint/Folder, or start the run without resuming.");
+      else if (chosen < 0)
+        {
+          verdict[0] = parameter_message("Checkpoint/Resume from checkpoint",
+                                         "true",
+                                         "no complete checkpoint is left in "
+                                           + folder + ":");
+          for (const auto &[candidate, problem] : problems)
+            verdict[0] += "\n  " + candidate + ": " + problem;
+          verdict[0] += "\nStart the run afresh without resuming.";
+        }
+      else
+        {
+          for (const auto &[candidate, problem] : problems)
+            verdict[1] += "Checkpoint: " + candidate
+                          + " is not usable: " + problem + ".\n";
+          if (chosen != 0)
+            verdict[1] += "Checkpoint: resuming from " + candidates[chosen]
+                          + " (step " + std::to_string(newest.step)
+                          + ") instead of " + folder + ".\n";
+          verdict[2] = candidates[chosen];
+          verdict[3] = newest.to_json();
+        }
+      return verdict;
+    }
   } // namespace
 
 
@@ -448,65 +540,13 @@ namespace VPContact
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         std::map<std::string, std::string> problems;
-        int                                chosen = -1;
         CheckpointMetadata                 newest;
-        for (unsigned int i = 0; i < candidates.size(); ++i)
-          {
-            if (!std::filesystem::is_directory(candidates[i]))
-              continue;
-            std::string problem = CheckpointManifest::check(candidates[i]);
-            CheckpointMetadata metadata;
-            if (problem.empty())
-              try
-                {
-                  std::ifstream      in(candidates[i] + "/checkpoint.json");
-                  std::ostringstream text;
-                  text << in.rdbuf();
-                  metadata = CheckpointMetadata::from_json(text.str());
-                }
-              catch (const std::exception &e)
-                {
-                  problem = "its checkpoint.json cannot be read: "
-                            + std::string(e.what());
-                }
-            if (!problem.empty())
-              problems[candidates[i]] = problem;
-            else if (chosen < 0 || metadata.step > newest.step)
-              {
-                chosen = i;
-                newest = metadata;
-              }
-          }
-
-        if (chosen < 0 && problems.empty())
-          verdict[0] = parameter_message(
-            "Checkpoint/Resume from checkpoint",
-            "true",
-            "there is no checkpoint in " + checkpoint_folder
-              + " (nor .new or .old next to it). Check Output/Directory and "
-                "Checkpoint/Folder, or start the run without resuming.");
-        else if (chosen < 0)
-          {
-            verdict[0] = parameter_message("Checkpoint/Resume from checkpoint",
-                                           "true",
-                                           "no complete checkpoint is left in "
-                                             + checkpoint_folder + ":");
-            for (const auto &[folder, problem] : problems)
-              verdict[0] += "\n  " + folder + ": " + problem;
-            verdict[0] += "\nStart the run afresh without resuming.";
-          }
-        else
-          {
-            for (const auto &[folder, problem] : problems)
-              verdict[1] += "Checkpoint: " + folder
-                            + " is not usable: " + problem + ".\n";
-            if (chosen != 0)
-              verdict[1] += "Checkpoint: resuming from " + candidates[chosen]
-                            + " (step " + std::to_string(newest.step)
-                            + ") instead of " + checkpoint_folder + ".\n";
-            verdict[2] = candidates[chosen];
-            verdict[3] = newest.to_json();
-          }
+        const int chosen = newest_usable(candidates, problems, newest);
+        verdict          = checkpoint_verdict(checkpoint_folder,
+                                     candidates,
+                                     problems,
+                                     chosen,
+                                     newest);
       }
     verdict = Utilities::MPI::broadcast(communicator, verdict, 0);
     AssertThrow(verdict[0].empty(), ExcMessage(verdict[0]));

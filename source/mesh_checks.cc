@@ -61,16 +61,11 @@ namespace VPContact
     // and in p4est's connectivity.
     constexpr double bytes_per_coarse_cell = 500;
 
-    // Throw if a vertex of the mesh lies inside a boundary face of another
-    // cell: two cells that do not share the whole face, so that the body
-    // is cut along it (deal.II takes such a face for boundary, and p4est
-    // cannot order such a mesh on several ranks). Only boundary vertices
-    // can do this, and only boundary faces can hold them; the vertices are
-    // sorted by x so that each face looks at those within its extent.
+    // The vertices on the boundary of the mesh as (x, index) pairs, sorted
+    // by x.
     template <int dim>
-    void
-    check_conforming(const Triangulation<dim> &triangulation,
-                     const std::string        &source)
+    std::vector<std::pair<double, unsigned int>>
+    boundary_vertices_by_x(const Triangulation<dim> &triangulation)
     {
       const std::vector<Point<dim>> &vertices = triangulation.get_vertices();
       std::vector<bool>              on_boundary(vertices.size(), false);
@@ -83,7 +78,42 @@ namespace VPContact
         if (on_boundary[i])
           by_x.emplace_back(vertices[i][0], i);
       std::sort(by_x.begin(), by_x.end());
+      return by_x;
+    }
 
+    // The unit normal of a face's line (2D) or plane (3D), which passes
+    // through its centre.
+    template <int dim>
+    Tensor<1, dim>
+    unit_normal(const typename Triangulation<dim>::face_iterator &face)
+    {
+      Tensor<1, dim> normal;
+      if (dim == 2)
+        {
+          const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
+          normal[0]              = -t[1];
+          normal[1]              = t[0];
+        }
+      else
+        normal = cross_product_3d(face->vertex(3) - face->vertex(0),
+                                  face->vertex(2) - face->vertex(1));
+      normal /= normal.norm();
+      return normal;
+    }
+
+    // Throw if a vertex of the mesh lies inside a boundary face of another
+    // cell: two cells that do not share the whole face, so that the body
+    // is cut along it (deal.II takes such a face for boundary, and p4est
+    // cannot order such a mesh on several ranks). Only boundary vertices
+    // can do this, and only boundary faces can hold them; the vertices are
+    // sorted by x so that each face looks at those within its extent.
+    template <int dim>
+    void
+    check_conforming(const Triangulation<dim> &triangulation,
+                     const std::string        &source)
+    {
+      const std::vector<Point<dim>> &vertices = triangulation.get_vertices();
+      const auto by_x = boundary_vertices_by_x(triangulation);
       for (const auto &face : triangulation.active_face_iterators())
         if (face->at_boundary())
           {
@@ -96,18 +126,8 @@ namespace VPContact
                   upper[d] = std::max(upper[d], face->vertex(v)[d]);
                 }
             // The face's line (2D) or plane (3D): a point and a unit normal.
-            const Point<dim> centre = face->center();
-            Tensor<1, dim>   normal;
-            if (dim == 2)
-              {
-                const Tensor<1, dim> t = face->vertex(1) - face->vertex(0);
-                normal[0]              = -t[1];
-                normal[1]              = t[0];
-              }
-            else
-              normal = cross_product_3d(face->vertex(3) - face->vertex(0),
-                                        face->vertex(2) - face->vertex(1));
-            normal /= normal.norm();
+            const Point<dim>     centre = face->center();
+            const Tensor<1, dim> normal = unit_normal<dim>(face);
             for (auto it
                  = std::lower_bound(by_x.begin(),
                                     by_x.end(),

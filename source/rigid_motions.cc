@@ -88,6 +88,73 @@ namespace VPContact
         node.second.second = Point<dim>((node.second.second - centre) / size);
       return nodes;
     }
+
+    // The Gram matrix G = V^T V of the rigid motions (row by row), with
+    // V_ik = r_k(i) - sum_j a_ij r_k(j) over the constrained displacement
+    // lines i: c^T G c is how much the motion sum_k c_k r_k violates the
+    // constraints. Each rank adds the lines it owns, skipping those that
+    // refer to a degree of freedom it does not see; the sum is over all
+    // ranks.
+    template <int dim>
+    std::vector<double>
+    constrained_motions_gram(const DoFHandler<dim>           &dof_handler,
+                             const AffineConstraints<double> &constraints,
+                             const unsigned int               n_motions)
+    {
+      const IndexSet owned  = dof_handler.locally_owned_dofs();
+      const auto     nodes  = displacement_nodes(dof_handler);
+      const auto     motion = [&](const unsigned int k, const auto &node) {
+        return rigid_motion<dim>(k, node.second, node.first);
+      };
+      std::vector<double> gram(n_motions * n_motions, 0.);
+      for (const auto &[dof, node] : nodes)
+        if (owned.is_element(dof) && constraints.is_constrained(dof))
+          {
+            std::vector<double> v(n_motions);
+            bool                known = true;
+            for (unsigned int k = 0; k < n_motions; ++k)
+              v[k] = motion(k, node);
+            if (const auto *entries = constraints.get_constraint_entries(dof))
+              for (const auto &[j, a] : *entries)
+                {
+                  const auto other = nodes.find(j);
+                  known            = known && other != nodes.end();
+                  if (other != nodes.end())
+                    for (unsigned int k = 0; k < n_motions; ++k)
+                      v[k] -= a * motion(k, other->second);
+                }
+            if (known)
+              for (unsigned int k = 0; k < n_motions; ++k)
+                for (unsigned int l = 0; l < n_motions; ++l)
+                  gram[k * n_motions + l] += v[k] * v[l];
+          }
+      Utilities::MPI::sum(gram, dof_handler.get_communicator(), gram);
+      return gram;
+    }
+
+    // The eigenvalues and eigenvectors of the symmetric @p n x @p n matrix
+    // @p gram (row by row). Returns its scale, the largest diagonal entry,
+    // against which an eigenvalue counts as zero.
+    double
+    eigen_decomposition(const std::vector<double> &gram,
+                        const unsigned int         n,
+                        Vector<double>            &eigenvalues,
+                        FullMatrix<double>        &eigenvectors)
+    {
+      LAPACKFullMatrix<double> matrix(n, n);
+      double                   scale = 0;
+      for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int l = 0; l < n; ++l)
+          matrix(k, l) = gram[k * n + l];
+      for (unsigned int k = 0; k < n; ++k)
+        scale = std::max(scale, gram[k * n + k]);
+      matrix.compute_eigenvalues_symmetric(-1. - scale,
+                                           1. + n * scale,
+                                           0.,
+                                           eigenvalues,
+                                           eigenvectors);
+      return scale;
+    }
   } // namespace
 
 
@@ -98,56 +165,16 @@ namespace VPContact
                            const AffineConstraints<double> &constraints,
                            const std::string               &remedy)
   {
-    constexpr unsigned int n_motions    = (dim == 2 ? 3 : 6);
-    const MPI_Comm         communicator = dof_handler.get_communicator();
-    const IndexSet         owned        = dof_handler.locally_owned_dofs();
-    const auto             nodes        = displacement_nodes(dof_handler);
-    const auto motion = [&](const unsigned int k, const auto &node) {
-      return rigid_motion<dim>(k, node.second, node.first);
-    };
-
-    // G = V^T V, V_ik = r_k(i) - sum_j a_ij r_k(j) over the constrained
-    // displacement lines i this rank owns.
-    std::vector<double> gram(n_motions * n_motions, 0.);
-    for (const auto &[dof, node] : nodes)
-      if (owned.is_element(dof) && constraints.is_constrained(dof))
-        {
-          std::vector<double> v(n_motions);
-          bool                known = true;
-          for (unsigned int k = 0; k < n_motions; ++k)
-            v[k] = motion(k, node);
-          if (const auto *entries = constraints.get_constraint_entries(dof))
-            for (const auto &[j, a] : *entries)
-              {
-                const auto other = nodes.find(j);
-                known            = known && other != nodes.end();
-                if (other != nodes.end())
-                  for (unsigned int k = 0; k < n_motions; ++k)
-                    v[k] -= a * motion(k, other->second);
-              }
-          if (known)
-            for (unsigned int k = 0; k < n_motions; ++k)
-              for (unsigned int l = 0; l < n_motions; ++l)
-                gram[k * n_motions + l] += v[k] * v[l];
-        }
-    Utilities::MPI::sum(gram, communicator, gram);
+    constexpr unsigned int    n_motions = (dim == 2 ? 3 : 6);
+    const std::vector<double> gram
+      = constrained_motions_gram(dof_handler, constraints, n_motions);
 
     // The motion of the smallest eigenvalue is the one held least; one
     // held by nothing has the eigenvalue 0 (to round-off).
-    LAPACKFullMatrix<double> matrix(n_motions, n_motions);
-    double                   scale = 0;
-    for (unsigned int k = 0; k < n_motions; ++k)
-      for (unsigned int l = 0; l < n_motions; ++l)
-        matrix(k, l) = gram[k * n_motions + l];
-    for (unsigned int k = 0; k < n_motions; ++k)
-      scale = std::max(scale, gram[k * n_motions + k]);
     Vector<double>     eigenvalues;
     FullMatrix<double> eigenvectors;
-    matrix.compute_eigenvalues_symmetric(-1. - scale,
-                                         1. + n_motions * scale,
-                                         0.,
-                                         eigenvalues,
-                                         eigenvectors);
+    const double       scale
+      = eigen_decomposition(gram, n_motions, eigenvalues, eigenvectors);
     unsigned int weakest = 0;
     for (unsigned int m = 1; m < eigenvalues.size(); ++m)
       if (eigenvalues[m] < eigenvalues[weakest])

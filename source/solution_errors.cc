@@ -179,6 +179,53 @@ namespace VPContact
           squares[2] += e_damage * e_damage * JxW;
         }
     }
+
+    // Throw unless the run and the reference both have a damage field or
+    // both have none.
+    template <int dim>
+    void
+    check_same_fields(const Snapshot<dim> &run,
+                      const Snapshot<dim> &reference,
+                      const std::string   &reference_name)
+    {
+      AssertThrow(run.has_damage == reference.has_damage,
+                  ExcMessage("The reference " + reference_name
+                             + (reference.has_damage ? " has" : " has no")
+                             + " damage field, this run"
+                             + (run.has_damage ? " has one." : " has none.")
+                             + " Compare runs of the same scene."));
+    }
+
+    // Throw unless the reference refines the run's mesh: the reference's
+    // cells that lie in cells of the run (volume @p covered) and the run's
+    // cells (volume @p run_volume) both fill the reference's volume
+    // @p total, and the reference's vertices are where the run's cells map
+    // them (@p mismatch, the largest distance, is small against the size
+    // @p scale of the body).
+    void
+    check_reference_refines_run(const std::string &reference_name,
+                                const double       total,
+                                const double       covered,
+                                const double       run_volume,
+                                const double       mismatch,
+                                const double       scale)
+    {
+      AssertThrow(
+        std::abs(covered - total) <= 1e-9 * total
+          && std::abs(run_volume - total) <= 1e-9 * total,
+        ExcMessage("The reference " + reference_name
+                   + " is not a refinement of this run's mesh: of its volume "
+                   + to_text(total) + ", " + to_text(covered)
+                   + " lies in cells of this run (volume " + to_text(run_volume)
+                   + "). The reference must start from the same coarse mesh "
+                     "(Geometry) and be at least as fine everywhere: refine "
+                     "it more (Geometry/Global refinements) than any cycle."));
+      AssertThrow(mismatch <= 1e-9 * scale,
+                  ExcMessage("The reference " + reference_name
+                             + " has its cells elsewhere than this run (by "
+                             + to_text(mismatch)
+                             + "): it was computed on another geometry."));
+    }
   } // namespace
 
 
@@ -190,12 +237,7 @@ namespace VPContact
                  const std::string   &reference_name,
                  const MPI_Comm       communicator)
   {
-    AssertThrow(run.has_damage == reference.has_damage,
-                ExcMessage("The reference " + reference_name
-                           + (reference.has_damage ? " has" : " has no")
-                           + " damage field, this run"
-                           + (run.has_damage ? " has one." : " has none.")
-                           + " Compare runs of the same scene."));
+    check_same_fields(run, reference, reference_name);
     std::map<CellId::binary_type, unsigned int> run_cells;
     for (unsigned int a = 0; a < run.n_cells(); ++a)
       run_cells[run.id(a)] = a;
@@ -228,21 +270,12 @@ namespace VPContact
     run_volume         = Utilities::MPI::sum(run_volume, communicator);
     mismatch           = Utilities::MPI::max(mismatch, communicator);
     const double scale = std::pow(total, 1. / dim);
-    AssertThrow(std::abs(covered - total) <= 1e-9 * total
-                  && std::abs(run_volume - total) <= 1e-9 * total,
-                ExcMessage(
-                  "The reference " + reference_name
-                  + " is not a refinement of this run's mesh: of its volume "
-                  + to_text(total) + ", " + to_text(covered)
-                  + " lies in cells of this run (volume " + to_text(run_volume)
-                  + "). The reference must start from the same coarse mesh "
-                    "(Geometry) and be at least as fine everywhere: refine "
-                    "it more (Geometry/Global refinements) than any cycle."));
-    AssertThrow(mismatch <= 1e-9 * scale,
-                ExcMessage("The reference " + reference_name
-                           + " has its cells elsewhere than this run (by "
-                           + to_text(mismatch)
-                           + "): it was computed on another geometry."));
+    check_reference_refines_run(reference_name,
+                                total,
+                                covered,
+                                run_volume,
+                                mismatch,
+                                scale);
 
     Utilities::MPI::sum(ArrayView<const double>(squares, 3),
                         communicator,
