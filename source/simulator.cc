@@ -18,18 +18,15 @@ namespace VPContact
     // the scene has damage (read here because the element is built before
     // the modules parse their sections).
     template <int dim>
-    std::unique_ptr<const FESystem<dim>>
+    FESystem<dim>
     make_finite_element(ParameterHandler &prm)
     {
       prm.enter_subsection("Damage");
       const bool with_damage = (prm.get("Model") != "none");
       prm.leave_subsection();
       if (with_damage)
-        return std::make_unique<const FESystem<dim>>(FE_Q<dim>(1),
-                                                     dim,
-                                                     FE_Q<dim>(1),
-                                                     1);
-      return std::make_unique<const FESystem<dim>>(FE_Q<dim>(1), dim);
+        return FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1);
+      return FESystem<dim>(FE_Q<dim>(1), dim);
     }
   } // namespace
 
@@ -76,8 +73,7 @@ namespace VPContact
                     typename Triangulation<dim>::MeshSmoothing(
                       Triangulation<dim>::smoothing_on_refinement
                       | Triangulation<dim>::smoothing_on_coarsening))
-    , fe_storage(make_finite_element<dim>(prm))
-    , fe(*fe_storage)
+    , fe(make_finite_element<dim>(prm))
     , quadrature(2)
     , dof_handler(triangulation)
   {
@@ -90,7 +86,7 @@ namespace VPContact
     friction.parse_parameters(prm);
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
-    linear_solver.parse_parameters(prm);
+    displacement.solver.parse_parameters(prm);
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
@@ -106,7 +102,7 @@ namespace VPContact
         = std::make_unique<DamageProblem<dim>>(prm,
                                                damage_model,
                                                time_discretization,
-                                               linear_solver,
+                                               displacement.solver,
                                                output_writer.directory(),
                                                computing_timer,
                                                mpi_communicator);
@@ -131,7 +127,7 @@ namespace VPContact
     check_stability_limits();
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first < dim)
-        displacement_shape_functions.push_back(i);
+        displacement.shape_functions.push_back(i);
   }
 
 
@@ -141,7 +137,7 @@ namespace VPContact
   {
     // Members are destroyed in reverse order of declaration, the matrices
     // before the linear solver; a factorization (MUMPS) must go first.
-    linear_solver.clear();
+    displacement.solver.clear();
   }
 
 
@@ -189,7 +185,7 @@ namespace VPContact
         if (cycle > 0)
           refine_mesh();
         run_cycle(cycle);
-        if (stopped_on_signal)
+        if (checkpointing.stopped())
           return;
       }
     pcout << convergence_study.table_text(
@@ -294,7 +290,7 @@ namespace VPContact
   bool
   Simulator<dim>::stopped_for_resume() const
   {
-    return stopped_on_signal;
+    return checkpointing.stopped();
   }
 
 
@@ -349,13 +345,13 @@ namespace VPContact
     TimerOutput::Scope t(computing_timer, "Build preconditioner");
     // A matrix with an infinite entry makes the factorizations fail deep
     // inside the libraries (ML writes a dump file of it): refuse it here.
-    AssertThrow(std::isfinite(stiffness_matrix.frobenius_norm()),
+    AssertThrow(std::isfinite(displacement.matrix.frobenius_norm()),
                 ExcMessage("The stiffness matrix is not finite: Material/"
                            "Young's modulus = "
                            + to_text(material.youngs_modulus())
                            + " overflows with the cell sizes of this mesh. "
                              "Rescale the units of the scene."));
-    linear_solver.initialize(stiffness_matrix, rigid_motions());
+    displacement.solver.initialize(displacement.matrix, rigid_motions());
   }
 
 
@@ -386,18 +382,19 @@ namespace VPContact
       {
         assemble_rhs(time, with_viscoplastic_rate);
         if (friction_problem)
-          friction_problem->add_slip_forces(constraints, rhs);
+          friction_problem->add_slip_forces(constraints, displacement.rhs);
         {
           TimerOutput::Scope t(computing_timer, "Solve");
           // The displacement entries lead the local entries of the full
           // vector (see setup_dofs()).
           std::copy_n(increment_owned.begin(),
-                      displacement_increment.locally_owned_size(),
-                      displacement_increment.begin());
+                      displacement.increment.locally_owned_size(),
+                      displacement.increment.begin());
           last_linear_iterations
-            += linear_solver.solve(displacement_increment, rhs);
-          std::copy(displacement_increment.begin(),
-                    displacement_increment.end(),
+            += displacement.solver.solve(displacement.increment,
+                                         displacement.rhs);
+          std::copy(displacement.increment.begin(),
+                    displacement.increment.end(),
                     increment_owned.begin());
           constraints.distribute(increment_owned);
         }
@@ -453,10 +450,11 @@ namespace VPContact
     // The floor of a time step: one solve of the displacement system with
     // everything reused (matrix and preconditioner as they are, the last
     // right-hand side), from a zero start vector.
-    TrilinosWrappers::MPI::Vector x(displacement_increment);
+    TrilinosWrappers::MPI::Vector x(displacement.increment);
     x = 0.;
     Timer              timer;
-    const unsigned int iterations = linear_solver.solve(x, rhs);
+    const unsigned int iterations
+      = displacement.solver.solve(x, displacement.rhs);
     timer.stop();
 
     // Its two kernels, each timed over ten applications: they tell how the
@@ -464,18 +462,18 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector y(x);
     Timer                         matvec_timer;
     for (unsigned int i = 0; i < 10; ++i)
-      stiffness_matrix.vmult(y, x);
+      displacement.matrix.vmult(y, x);
     matvec_timer.stop();
     Timer preconditioner_timer;
     for (unsigned int i = 0; i < 10; ++i)
-      linear_solver.precondition(y, rhs);
+      displacement.solver.precondition(y, displacement.rhs);
     preconditioner_timer.stop();
-    const bool        cg = !linear_solver.is_direct();
+    const bool        cg = !displacement.solver.is_direct();
     const std::string how
       = (cg ? std::to_string(iterations) + " CG iterations" :
               std::string("solve with the factors"));
     pcout << "Solve floor: one displacement solve takes " << timer.wall_time()
-          << " s (" << how << ", " << stiffness_matrix.m()
+          << " s (" << how << ", " << displacement.matrix.m()
           << " dofs); one matrix-vector product "
           << 100. * matvec_timer.wall_time() << " ms, "
           << (cg ? "one preconditioner application " :

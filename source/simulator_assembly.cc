@@ -61,20 +61,20 @@ namespace VPContact
     FullMatrix<double>                   cell_matrix;
     std::vector<types::global_dof_index> dof_indices;
 
-    stiffness_matrix = 0.;
+    displacement.matrix = 0.;
     for (const auto &cell : owned_cells)
       {
         fe_values.reinit(cell);
         elastic_cell_matrix(fe_values,
-                            displacement_shape_functions,
+                            displacement.shape_functions,
                             material.stiffness(),
                             cell_matrix);
         get_displacement_dof_indices(cell, dof_indices);
         constraints.distribute_local_to_global(cell_matrix,
                                                dof_indices,
-                                               stiffness_matrix);
+                                               displacement.matrix);
       }
-    stiffness_matrix.compress(VectorOperation::add);
+    displacement.matrix.compress(VectorOperation::add);
   }
 
 
@@ -143,8 +143,9 @@ namespace VPContact
       = cell_kinematics.local_entries(solution);
 
     // The cells in the threads of WorkStream, each into its own CellRhs;
-    // their sums into rhs one at a time, in the order of the cells.
-    rhs = 0.;
+    // their sums into displacement.rhs one at a time, in the order of the
+    // cells.
+    displacement.rhs = 0.;
     WorkStream::run(
       owned_cells.begin(),
       owned_cells.end(),
@@ -161,16 +162,16 @@ namespace VPContact
         if (copy.inhomogeneous)
           constraints.distribute_local_to_global(copy.cell_rhs,
                                                  copy.dof_indices,
-                                                 rhs,
+                                                 displacement.rhs,
                                                  copy.cell_matrix);
         else
           constraints.distribute_local_to_global(copy.cell_rhs,
                                                  copy.dof_indices,
-                                                 rhs);
+                                                 displacement.rhs);
       },
       AssemblyScratch(fe, quadrature),
-      CellRhs(displacement_shape_functions.size()));
-    rhs.compress(VectorOperation::add);
+      CellRhs(displacement.shape_functions.size()));
+    displacement.rhs.compress(VectorOperation::add);
   }
 
 
@@ -252,11 +253,11 @@ namespace VPContact
                      scratch.cell_vector);
     if (copy.inhomogeneous)
       elastic_cell_matrix(scratch.fe_values,
-                          displacement_shape_functions,
+                          displacement.shape_functions,
                           material.stiffness(),
                           copy.cell_matrix);
-    for (unsigned int i = 0; i < displacement_shape_functions.size(); ++i)
-      copy.cell_rhs(i) = scratch.cell_vector(displacement_shape_functions[i]);
+    for (unsigned int i = 0; i < displacement.shape_functions.size(); ++i)
+      copy.cell_rhs(i) = scratch.cell_vector(displacement.shape_functions[i]);
   }
 
 

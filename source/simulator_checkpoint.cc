@@ -119,7 +119,7 @@ namespace VPContact
     if (!decision.stop)
       return false;
 
-    stopped_on_signal = true;
+    checkpointing.note_stopped_on_signal();
     pcout << "\nStopped on " << StopSignalCatcher::name(decision.signal)
           << " at the end of step " << n << " of "
           << time_discretization.n_steps()

@@ -28,7 +28,7 @@ namespace VPContact
     FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
     const FEValuesExtractors::Vector u(0);
     const FEValuesExtractors::Scalar zeta(dim);
-    const std::vector<unsigned int> &shape = displacement_shape_functions;
+    const std::vector<unsigned int> &shape = displacement.shape_functions;
     const unsigned int               dofs_per_cell = shape.size();
     FullMatrix<double>               cell_matrix(dofs_per_cell, dofs_per_cell);
     Vector<double>                   cell_rhs(dofs_per_cell);
@@ -39,8 +39,8 @@ namespace VPContact
     std::vector<SymmetricTensor<2, dim>> eps_phi(dofs_per_cell);
     std::vector<double>                  damage_values(quadrature.size(), 1.);
 
-    stiffness_matrix = 0.;
-    rhs              = 0.;
+    displacement.matrix = 0.;
+    displacement.rhs    = 0.;
     for (const auto &cell : owned_cells)
       {
         cell_matrix = 0.;
@@ -81,11 +81,11 @@ namespace VPContact
         constraints.distribute_local_to_global(cell_matrix,
                                                cell_rhs,
                                                dof_indices,
-                                               stiffness_matrix,
-                                               rhs);
+                                               displacement.matrix,
+                                               displacement.rhs);
       }
-    stiffness_matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
+    displacement.matrix.compress(VectorOperation::add);
+    displacement.rhs.compress(VectorOperation::add);
   }
 
 
@@ -111,7 +111,7 @@ namespace VPContact
     for (unsigned int iteration = 1;; ++iteration)
       {
         assemble_implicit_system(time);
-        const double residual_norm = rhs.l2_norm();
+        const double residual_norm = displacement.rhs.l2_norm();
         AssertThrow(std::isfinite(residual_norm),
                     ExcMessage("The implicit step at t = " + to_text(time)
                                + " produced a residual that is not finite. The "
@@ -139,7 +139,8 @@ namespace VPContact
         newton_update = 0.;
         {
           TimerOutput::Scope t(computing_timer, "Solve");
-          last_linear_iterations += linear_solver.solve(newton_update, rhs);
+          last_linear_iterations
+            += displacement.solver.solve(newton_update, displacement.rhs);
         }
         // The update on all degrees of freedom (the displacement ones lead
         // the local entries), with its constraints.

@@ -367,7 +367,7 @@ namespace VPContact
       return block_copy<dim>(owned,
                              locally_owned_dofs,
                              locally_relevant_dofs,
-                             displacement_owned.size(),
+                             displacement.owned.size(),
                              mpi_communicator);
     };
     const TrilinosWrappers::MPI::BlockVector solution_blocks

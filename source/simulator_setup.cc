@@ -86,8 +86,8 @@ namespace VPContact
       = DoFTools::count_dofs_per_fe_block(dof_handler, block_component)[0];
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
-    displacement_owned    = locally_owned_dofs.get_view(0, n_u);
-    displacement_relevant = locally_relevant_dofs.get_view(0, n_u);
+    displacement.owned    = locally_owned_dofs.get_view(0, n_u);
+    displacement.relevant = locally_relevant_dofs.get_view(0, n_u);
 
     // The constraints at t = 0 have the structure of those of every step
     // (only inhomogeneities of prescribed displacements change), so the
@@ -96,9 +96,9 @@ namespace VPContact
 
     // The sparsity pattern of the displacement block: Trilinos sends the
     // entries of rows that other ranks own to them (as in step-32).
-    TrilinosWrappers::SparsityPattern    sparsity(displacement_owned,
-                                               displacement_owned,
-                                               displacement_relevant,
+    TrilinosWrappers::SparsityPattern    sparsity(displacement.owned,
+                                               displacement.owned,
+                                               displacement.relevant,
                                                mpi_communicator);
     std::vector<types::global_dof_index> u_indices;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -108,8 +108,8 @@ namespace VPContact
           constraints.add_entries_local_to_global(u_indices, sparsity, false);
         }
     sparsity.compress();
-    linear_solver.clear(); // it refers to the matrix of the last mesh
-    stiffness_matrix.reinit(sparsity);
+    displacement.solver.clear(); // it refers to the matrix of the last mesh
+    displacement.matrix.reinit(sparsity);
 
     // The contact nodes are read off the constraints without friction; the
     // sparsity pattern above, built with those, also holds every pattern
@@ -133,15 +133,15 @@ namespace VPContact
       "Roller boundary ids or Prescribed displacement boundary ids, or with "
       "friction on the contact boundary (Contact/Friction bound > 0).");
 
-    rhs.reinit(displacement_owned, mpi_communicator);
-    displacement_increment.reinit(displacement_owned, mpi_communicator);
+    displacement.rhs.reinit(displacement.owned, mpi_communicator);
+    displacement.increment.reinit(displacement.owned, mpi_communicator);
     solution_owned.reinit(locally_owned_dofs, mpi_communicator);
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
     increment_owned.reinit(locally_owned_dofs, mpi_communicator);
     increment_predictor.reinit(locally_owned_dofs, mpi_communicator);
-    newton_update.reinit(displacement_owned, mpi_communicator);
+    newton_update.reinit(displacement.owned, mpi_communicator);
     increment.reinit(locally_owned_dofs,
                      locally_relevant_dofs,
                      mpi_communicator);
@@ -180,9 +180,9 @@ namespace VPContact
     thread_local std::vector<types::global_dof_index> all;
     all.resize(fe.n_dofs_per_cell());
     cell->get_dof_indices(all);
-    indices.resize(displacement_shape_functions.size());
+    indices.resize(displacement.shape_functions.size());
     for (unsigned int i = 0; i < indices.size(); ++i)
-      indices[i] = all[displacement_shape_functions[i]];
+      indices[i] = all[displacement.shape_functions[i]];
   }
 
 
@@ -205,7 +205,7 @@ namespace VPContact
       = GridTools::compute_bounding_box(triangulation).center();
     const unsigned int n_modes = (dim == 2 ? 3 : 6);
     space.modes.assign(n_modes,
-                       TrilinosWrappers::MPI::Vector(displacement_owned,
+                       TrilinosWrappers::MPI::Vector(displacement.owned,
                                                      mpi_communicator));
     for (unsigned int d = 0; d < dim; ++d)
       {

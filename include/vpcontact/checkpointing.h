@@ -113,13 +113,27 @@ namespace VPContact
     bool
     resume() const;
 
-    /// Whether signals stop the run with a checkpoint.
     /// Whether checkpoints are written every M steps or S seconds.
     bool
     writes_periodically() const;
 
+    /// Whether signals stop the run with a checkpoint.
     bool
     stops_on_signal() const;
+
+    /// Record that a signal stopped the run after its checkpoint.
+    void
+    note_stopped_on_signal()
+    {
+      stopped_on_signal = true;
+    }
+
+    /// Whether a signal stopped the run after its checkpoint.
+    bool
+    stopped() const
+    {
+      return stopped_on_signal;
+    }
 
     /// The folder of the current checkpoint.
     const std::string &
@@ -195,10 +209,11 @@ namespace VPContact
     std::string
     ownership_problem() const;
 
-    unsigned int every_steps   = 0;
-    double       every_seconds = 0;
-    bool         resume_run    = false;
-    bool         catch_signals = true;
+    unsigned int every_steps       = 0;
+    double       every_seconds     = 0;
+    bool         resume_run        = false;
+    bool         catch_signals     = true;
+    bool         stopped_on_signal = false;
     std::string  checkpoint_folder;
 
     std::map<std::string, std::string>    parameters;

@@ -9,12 +9,12 @@
 #include <vpcontact/convergence_study.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/damage_problem.h>
+#include <vpcontact/displacement_system.h>
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/friction_problem.h>
 #include <vpcontact/geometry.h>
 #include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
-#include <vpcontact/linear_solver.h>
 #include <vpcontact/output_writer.h>
 #include <vpcontact/quadrature_history.h>
 #include <vpcontact/statistics.h>
@@ -190,7 +190,7 @@ namespace VPContact
     NearNullSpace
     rigid_motions() const;
     /// The displacement degrees of freedom of @p cell, in the order of
-    /// displacement_shape_functions.
+    /// displacement.shape_functions.
     void
     get_displacement_dof_indices(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -305,7 +305,6 @@ namespace VPContact
     std::unique_ptr<FrictionProblem<dim>> friction_problem;
     InitialConditions                     initial_conditions;
     TimeDiscretization                    time_discretization;
-    LinearSolver                          linear_solver;
     IncrementPredictor                    increment_predictor;
     OutputWriter<dim>                     output_writer;
     Verification<dim>                     verification;
@@ -316,32 +315,20 @@ namespace VPContact
     Checkpointing checkpointing;
     /// The checkpoint a resumed run reads (found by load_checkpoint_mesh()).
     CheckpointMetadata resumed_checkpoint;
-    /// Set when a signal stopped the run after a checkpoint.
-    bool stopped_on_signal = false;
 
     parallel::distributed::Triangulation<dim> triangulation;
     /// Q1 displacement, and a Q1 damage component in damage scenes only.
-    const std::unique_ptr<const FESystem<dim>> fe_storage;
-    const FESystem<dim>                       &fe;
+    const FESystem<dim> fe;
     /// The rule of assembly, stress storage and stress output alike.
     const QGauss<dim> quadrature;
     DoFHandler<dim>   dof_handler;
     IndexSet          locally_owned_dofs;
     IndexSet          locally_relevant_dofs;
-    /// The displacement block [0, n_u) of the numbering (see setup_dofs()):
-    /// its owned and relevant degrees of freedom, and the shape functions of
-    /// a cell that belong to it.
-    IndexSet                  displacement_owned;
-    IndexSet                  displacement_relevant;
-    std::vector<unsigned int> displacement_shape_functions;
     /// Constraints on the increment du of the current step.
     AffineConstraints<double> constraints;
 
-    /// The displacement system, on the displacement block: K, b, and the
-    /// solver's vector (du on the block).
-    TrilinosWrappers::SparseMatrix stiffness_matrix;
-    TrilinosWrappers::MPI::Vector  rhs;
-    TrilinosWrappers::MPI::Vector  displacement_increment;
+    /// K du = b on the displacement block, and its solver.
+    DisplacementSystem displacement;
     /// u_n: owned part and ghosted copy for evaluation and output.
     TrilinosWrappers::MPI::Vector solution_owned;
     TrilinosWrappers::MPI::Vector solution;
