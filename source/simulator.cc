@@ -202,7 +202,32 @@ namespace VPContact
   {
     // One run over [0, T] on the current mesh: set up the discrete problem,
     // then march in time.
-    Timer timer;
+    Timer              timer;
+    const unsigned int first_step = setup_cycle(cycle);
+    if (march(first_step))
+      return;
+    output_writer.finish_field_output(mpi_communicator);
+    print_summary();
+    if (output_writer.report_solve_floor())
+      report_solve_floor();
+    timer.stop();
+    convergence_study.finish_cycle(triangulation,
+                                   dof_handler.n_dofs(),
+                                   time_discretization,
+                                   timer.wall_time()
+                                     - convergence_study.diagnostics_time(),
+                                   output_writer.base_directory(),
+                                   mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::setup_cycle(const unsigned int cycle)
+  {
+    // The mesh's degrees of freedom, quadrature data, damage problem and
+    // matrix; returns the first step to compute.
     start_cycle(cycle);
     setup_dofs();
     setup_stress_history();
@@ -222,24 +247,18 @@ namespace VPContact
     assemble_stiffness_matrix();
     initialize_linear_solver();
     print_header();
+    return first_step;
+  }
 
-    // Adaptive cycles judge the mesh by indicators over the whole run (see
-    // ErrorIndicator); the last cycle has no next mesh to choose.
-    const bool indicators  = convergence_study.needs_indicators();
-    const auto finish_step = [&](const unsigned int n, const double wall) {
-      postprocess_step(n, wall);
-      if (indicators)
-        {
-          TimerOutput::Scope t(computing_timer, "Error indicators");
-          convergence_study.indicator().accumulate(dof_handler,
-                                                   solution,
-                                                   damage_model.is_active(),
-                                                   material.youngs_modulus());
-        }
-    };
 
+
+  template <int dim>
+  bool
+  Simulator<dim>::march(const unsigned int first_step)
+  {
     // From here on SIGINT/SIGTERM/SIGUSR1 stop a single run at the end of a
     // step, with a checkpoint (runs with cycles are not checkpointed).
+    // Returns whether the run stopped so.
     const auto signal_catcher
       = (checkpointing.stops_on_signal() && convergence_study.n_cycles() == 1 ?
            std::make_unique<StopSignalCatcher>() :
@@ -260,7 +279,7 @@ namespace VPContact
             finish_step(n, step_timer.wall_time());
             if (signal_catcher || checkpointing.writes_periodically())
               if (checkpoint_after_step(n))
-                return;
+                return true;
           }
       }
     catch (...)
@@ -270,18 +289,27 @@ namespace VPContact
         output_writer.finish_field_output_after_error();
         throw;
       }
-    output_writer.finish_field_output(mpi_communicator);
-    print_summary();
-    if (output_writer.report_solve_floor())
-      report_solve_floor();
-    timer.stop();
-    convergence_study.finish_cycle(triangulation,
-                                   dof_handler.n_dofs(),
-                                   time_discretization,
-                                   timer.wall_time()
-                                     - convergence_study.diagnostics_time(),
-                                   output_writer.base_directory(),
-                                   mpi_communicator);
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::finish_step(const unsigned int n, const double wall_time)
+  {
+    // Statistics and output of step n; adaptive cycles judge the mesh by
+    // indicators over the whole run (see ErrorIndicator), and the last
+    // cycle has no next mesh to choose.
+    postprocess_step(n, wall_time);
+    if (convergence_study.needs_indicators())
+      {
+        TimerOutput::Scope t(computing_timer, "Error indicators");
+        convergence_study.indicator().accumulate(dof_handler,
+                                                 solution,
+                                                 damage_model.is_active(),
+                                                 material.youngs_modulus());
+      }
   }
 
 
@@ -370,8 +398,7 @@ namespace VPContact
     // active set iteration: solve with the current stick and slip sets,
     // recompute the friction multipliers from the residual, take the next
     // sets; stop when no node changes. The sets of the previous step are
-    // the start (warm start). The matrix changes only when a node enters or
-    // leaves the stick set; then it is reassembled with the new constraints.
+    // the start (warm start).
     last_linear_iterations = 0;
     // The first start vector: the increments of the last steps
     // extrapolated (see IncrementPredictor); the active-set iterations of
@@ -383,51 +410,9 @@ namespace VPContact
         assemble_rhs(time, with_viscoplastic_rate);
         if (friction_problem)
           friction_problem->add_slip_forces(constraints, displacement.rhs);
-        {
-          TimerOutput::Scope t(computing_timer, "Solve");
-          // The displacement entries lead the local entries of the full
-          // vector (see setup_dofs()).
-          std::copy_n(increment_owned.begin(),
-                      displacement.increment.locally_owned_size(),
-                      displacement.increment.begin());
-          last_linear_iterations
-            += displacement.solver.solve(displacement.increment,
-                                         displacement.rhs);
-          std::copy(displacement.increment.begin(),
-                    displacement.increment.end(),
-                    increment_owned.begin());
-          constraints.distribute(increment_owned);
-        }
-        increment = increment_owned;
-        if (!friction_problem)
+        solve_displacement();
+        if (!friction_problem || friction_sets_settled(time, iteration))
           break;
-
-        const auto changes
-          = friction_problem->update(increment,
-                                     material.youngs_modulus(),
-                                     [this](const auto &cells, auto &residual) {
-                                       assemble_residual(cells, residual);
-                                     });
-        if (changes.n_changed == 0)
-          break;
-        AssertThrow(
-          iteration < friction.max_iterations(),
-          ExcMessage(
-            "The stick/slip active set did not converge at t = " + to_text(time)
-            + ": after " + std::to_string(iteration) + " iterations "
-            + std::to_string(changes.n_changed)
-            + " contact node(s) still change set. Raise Contact/Maximum active "
-              "set iterations = "
-            + std::to_string(friction.max_iterations())
-            + ", or try another Contact/Complementarity factor. The output up "
-              "to the previous step is complete in "
-            + output_writer.directory() + "."));
-        if (changes.n_stick_changed > 0)
-          {
-            make_constraints(time, &solution);
-            assemble_stiffness_matrix();
-            initialize_linear_solver();
-          }
       }
 
     AssertThrow(all_finite(increment_owned, mpi_communicator),
@@ -439,6 +424,67 @@ namespace VPContact
       increment_predictor.record(increment_owned);
     solution_owned += increment_owned;
     solution = solution_owned;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_displacement()
+  {
+    TimerOutput::Scope t(computing_timer, "Solve");
+    // K du = b on the displacement block, whose entries lead the local
+    // entries of the full vector (see setup_dofs()), from the current
+    // increment.
+    std::copy_n(increment_owned.begin(),
+                displacement.increment.locally_owned_size(),
+                displacement.increment.begin());
+    last_linear_iterations
+      += displacement.solver.solve(displacement.increment, displacement.rhs);
+    std::copy(displacement.increment.begin(),
+              displacement.increment.end(),
+              increment_owned.begin());
+    constraints.distribute(increment_owned);
+    increment = increment_owned;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::friction_sets_settled(const double       time,
+                                        const unsigned int iteration)
+  {
+    // The next stick and slip sets from the multipliers of this solve.
+    // The matrix changes only when a node enters or leaves the stick set;
+    // then it is reassembled with the new constraints.
+    const auto changes
+      = friction_problem->update(increment,
+                                 material.youngs_modulus(),
+                                 [this](const auto &cells, auto &residual) {
+                                   assemble_residual(cells, residual);
+                                 });
+    if (changes.n_changed == 0)
+      return true;
+    AssertThrow(
+      iteration < friction.max_iterations(),
+      ExcMessage(
+        "The stick/slip active set did not converge at t = " + to_text(time)
+        + ": after " + std::to_string(iteration) + " iterations "
+        + std::to_string(changes.n_changed)
+        + " contact node(s) still change set. Raise Contact/Maximum active "
+          "set iterations = "
+        + std::to_string(friction.max_iterations())
+        + ", or try another Contact/Complementarity factor. The output up "
+          "to the previous step is complete in "
+        + output_writer.directory() + "."));
+    if (changes.n_stick_changed > 0)
+      {
+        make_constraints(time, &solution);
+        assemble_stiffness_matrix();
+        initialize_linear_solver();
+      }
+    return false;
   }
 
 

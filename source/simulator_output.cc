@@ -211,6 +211,36 @@ namespace VPContact
 
 
   template <int dim>
+  std::string
+  Simulator<dim>::add_step_statistics(const unsigned int  n,
+                                      const double        step_wall_time,
+                                      const StepMeasures &measures)
+  {
+    // A new row of statistics.csv with what every scene reports, and the
+    // start of the step's screen line.
+    const double time = time_discretization.time(n);
+    statistics.start_row();
+    statistics.add_value("step", n);
+    statistics.add_value("time", time);
+    statistics.add_value("cells",
+                         static_cast<unsigned long long>(
+                           triangulation.n_global_active_cells()));
+    statistics.add_value("dofs",
+                         static_cast<unsigned long long>(dof_handler.n_dofs()));
+    statistics.add_value("linear_iterations", last_linear_iterations);
+    statistics.add_value("wall_time", step_wall_time);
+    statistics.add_value("u_max", measures.u_max);
+    statistics.add_value("von_mises_max", measures.von_mises_max);
+    statistics.add_value("elastic_energy", measures.energy);
+    return "step " + std::to_string(n) + "  t = " + format("%.6g", time)
+           + "  |u|max = " + format("%.6e", measures.u_max)
+           + "  von Mises max = " + format("%.6e", measures.von_mises_max)
+           + "  energy = " + format("%.6e", measures.energy);
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::postprocess_step(const unsigned int n,
                                    const double       step_wall_time)
@@ -230,25 +260,7 @@ namespace VPContact
     if (write || verification.has_exact_stress())
       compute_cell_stresses(von_mises, components);
 
-    statistics.start_row();
-    statistics.add_value("step", n);
-    statistics.add_value("time", time);
-    statistics.add_value("cells",
-                         static_cast<unsigned long long>(
-                           triangulation.n_global_active_cells()));
-    statistics.add_value("dofs",
-                         static_cast<unsigned long long>(dof_handler.n_dofs()));
-    statistics.add_value("linear_iterations", last_linear_iterations);
-    statistics.add_value("wall_time", step_wall_time);
-    statistics.add_value("u_max", u_max);
-    statistics.add_value("von_mises_max", measures.von_mises_max);
-    statistics.add_value("elastic_energy", measures.energy);
-
-    std::string line
-      = "step " + std::to_string(n) + "  t = " + format("%.6g", time)
-        + "  |u|max = " + format("%.6e", u_max)
-        + "  von Mises max = " + format("%.6e", measures.von_mises_max)
-        + "  energy = " + format("%.6e", measures.energy);
+    std::string line = add_step_statistics(n, step_wall_time, measures);
     if (damage_model.is_active())
       damage_problem->add_statistics(statistics,
                                      line,

@@ -71,49 +71,17 @@ namespace VPContact
     // freedom that no longer exist; the constraints below must not see them.
     if (friction_problem)
       friction_problem->clear();
-    dof_handler.distribute_dofs(fe);
-    // Numbered by blocks, as in step-32 and step-55: all displacement
-    // degrees of freedom first, node by node, then all damage ones. On each
-    // rank the owned ones of each block are then a contiguous range, and in
-    // the local entries of a vector on all of them the displacement comes
-    // first: the displacement system is the block [0, n_u) alone, and the
-    // damage system the block [n_u, n).
-    std::vector<unsigned int> block_component(fe.n_components(), 0);
-    if (fe.n_components() > dim)
-      block_component[dim] = 1;
-    DoFRenumbering::component_wise(dof_handler, block_component);
-    const types::global_dof_index n_u
-      = DoFTools::count_dofs_per_fe_block(dof_handler, block_component)[0];
-    locally_owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
-    displacement.owned    = locally_owned_dofs.get_view(0, n_u);
-    displacement.relevant = locally_relevant_dofs.get_view(0, n_u);
+    number_dofs();
 
     // The constraints at t = 0 have the structure of those of every step
     // (only inhomogeneities of prescribed displacements change), so the
     // matrix built with them serves the whole run.
     make_constraints(0., nullptr);
-
-    // The sparsity pattern of the displacement block: Trilinos sends the
-    // entries of rows that other ranks own to them (as in step-32).
-    TrilinosWrappers::SparsityPattern    sparsity(displacement.owned,
-                                               displacement.owned,
-                                               displacement.relevant,
-                                               mpi_communicator);
-    std::vector<types::global_dof_index> u_indices;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          get_displacement_dof_indices(cell, u_indices);
-          constraints.add_entries_local_to_global(u_indices, sparsity, false);
-        }
-    sparsity.compress();
-    displacement.solver.clear(); // it refers to the matrix of the last mesh
-    displacement.matrix.reinit(sparsity);
+    setup_displacement_matrix();
 
     // The contact nodes are read off the constraints without friction; the
-    // sparsity pattern above, built with those, also holds every pattern
-    // with more nodes constrained. All nodes start in the stick set.
+    // sparsity pattern of the matrix, built with those, also holds every
+    // pattern with more nodes constrained. All nodes start in the stick set.
     if (friction_problem)
       {
         friction_problem->setup(dof_handler,
@@ -145,6 +113,55 @@ namespace VPContact
     increment.reinit(locally_owned_dofs,
                      locally_relevant_dofs,
                      mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::number_dofs()
+  {
+    dof_handler.distribute_dofs(fe);
+    // Numbered by blocks, as in step-32 and step-55: all displacement
+    // degrees of freedom first, node by node, then all damage ones. On each
+    // rank the owned ones of each block are then a contiguous range, and in
+    // the local entries of a vector on all of them the displacement comes
+    // first: the displacement system is the block [0, n_u) alone, and the
+    // damage system the block [n_u, n).
+    std::vector<unsigned int> block_component(fe.n_components(), 0);
+    if (fe.n_components() > dim)
+      block_component[dim] = 1;
+    DoFRenumbering::component_wise(dof_handler, block_component);
+    const types::global_dof_index n_u
+      = DoFTools::count_dofs_per_fe_block(dof_handler, block_component)[0];
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    displacement.owned    = locally_owned_dofs.get_view(0, n_u);
+    displacement.relevant = locally_relevant_dofs.get_view(0, n_u);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_displacement_matrix()
+  {
+    // The sparsity pattern of the displacement block: Trilinos sends the
+    // entries of rows that other ranks own to them (as in step-32).
+    TrilinosWrappers::SparsityPattern    sparsity(displacement.owned,
+                                               displacement.owned,
+                                               displacement.relevant,
+                                               mpi_communicator);
+    std::vector<types::global_dof_index> u_indices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          get_displacement_dof_indices(cell, u_indices);
+          constraints.add_entries_local_to_global(u_indices, sparsity, false);
+        }
+    sparsity.compress();
+    displacement.solver.clear(); // it refers to the matrix of the last mesh
+    displacement.matrix.reinit(sparsity);
   }
 
 

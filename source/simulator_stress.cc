@@ -194,86 +194,22 @@ namespace VPContact
   typename Simulator<dim>::StepMeasures
   Simulator<dim>::measure_step() const
   {
-    // One pass over the cells for what every step reports:
-    // - the largest von Mises stress of the cell averages of sigma (the
-    //   paper's P_Q sigma, as in the fields);
-    // - the largest nodal |u|, over the nodes of the locally owned cells,
-    //   read through CellKinematics' positions;
-    // - the energy stored in the stress, 1/2 (E^{-1} sigma, sigma): for an
-    //   elastic body 1/2 (E eps(u), eps(u)), lowered by viscous relaxation;
-    // - with damage, the volume where zeta < 1 at the quadrature points.
-    // The sums run over chunks of the cells in the threads, and the chunks
-    // are added in their order: the same bits with any number of threads.
-    struct Sums
-    {
-      double von_mises_max = 0, u_square_max = 0, energy = 0, damaged = 0,
-             volume = 0;
-      // std::max() passes NaN by: it is counted apart.
-      bool u_finite = true, zeta_finite = true;
-    };
-    const SymmetricTensor<4, dim> compliance  = invert(material.stiffness());
-    const bool                    with_damage = damage_model.is_active();
-    const double *const entries = cell_kinematics.local_entries(solution);
-    const unsigned int  n_nodes = cell_kinematics.nodes_per_cell();
-    std::vector<Sums>   chunk_sums(stress_chunks);
-    const auto          sum_chunk = [&](const unsigned int c) {
-      Sums               &sums = chunk_sums[c];
-      std::vector<double> norm_square(n_nodes), component(n_nodes),
-        zeta(quadrature.size());
-      for (std::size_t i = owned_cells.size() * c / stress_chunks;
-           i < owned_cells.size() * (c + 1) / stress_chunks;
-           ++i)
-        {
-          const auto &cell    = owned_cells[i];
-          const auto  history = stress_history.get_data(cell);
-          const auto  JxW     = stress_history.JxW(cell);
-          for (unsigned int q = 0; q < history.size(); ++q)
-            sums.energy += 0.5 * (compliance * history[q].stress)
-                           * history[q].stress * JxW[q];
-          const SymmetricTensor<2, dim> average
-            = cell_average_stress(history, JxW);
-          sums.von_mises_max
-            = std::max(sums.von_mises_max, von_mises_norm(average));
-
-          std::fill(norm_square.begin(), norm_square.end(), 0.);
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              cell_kinematics.nodal_values(cell,
-                                           entries,
-                                           d,
-                                           make_array_view(component));
-              for (unsigned int a = 0; a < n_nodes; ++a)
-                norm_square[a] += component[a] * component[a];
-            }
-          for (unsigned int a = 0; a < n_nodes; ++a)
-            {
-              sums.u_square_max = std::max(sums.u_square_max, norm_square[a]);
-              sums.u_finite = sums.u_finite && std::isfinite(norm_square[a]);
-            }
-
-          if (with_damage)
-            {
-              cell_kinematics.damage(cell, entries, make_array_view(zeta));
-              for (unsigned int q = 0; q < JxW.size(); ++q)
-                {
-                  sums.volume += JxW[q];
-                  sums.zeta_finite = sums.zeta_finite && std::isfinite(zeta[q]);
-                  if (zeta[q] < 1. - 1e-12)
-                    sums.damaged += JxW[q];
-                }
-            }
-        }
-    };
+    // One pass over the cells for what every step reports (see
+    // measure_chunk()). The sums run over chunks of the cells in the
+    // threads, and the chunks are added in their order: the same bits with
+    // any number of threads.
+    const double *const   entries = cell_kinematics.local_entries(solution);
+    std::vector<StepSums> chunk_sums(stress_chunks);
     parallel::apply_to_subranges(
       0u,
       stress_chunks,
       [&](const unsigned int begin, const unsigned int end) {
         for (unsigned int c = begin; c < end; ++c)
-          sum_chunk(c);
+          measure_chunk(c, entries, chunk_sums[c]);
       },
       1);
-    Sums sums;
-    for (const Sums &chunk : chunk_sums)
+    StepSums sums;
+    for (const StepSums &chunk : chunk_sums)
       {
         sums.von_mises_max = std::max(sums.von_mises_max, chunk.von_mises_max);
         sums.u_square_max  = std::max(sums.u_square_max, chunk.u_square_max);
@@ -294,11 +230,75 @@ namespace VPContact
       = !Utilities::MPI::logical_or(!sums.u_finite, mpi_communicator);
     measures.zeta_finite
       = !Utilities::MPI::logical_or(!sums.zeta_finite, mpi_communicator);
-    if (with_damage)
+    if (damage_model.is_active())
       measures.damaged_fraction
         = Utilities::MPI::sum(sums.damaged, mpi_communicator)
           / Utilities::MPI::sum(sums.volume, mpi_communicator);
     return measures;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::measure_chunk(const unsigned int  c,
+                                const double *const entries,
+                                StepSums           &sums) const
+  {
+    // On the cells of chunk @p c:
+    // - the largest von Mises stress of the cell averages of sigma (the
+    //   paper's P_Q sigma, as in the fields);
+    // - the largest nodal |u|, over the nodes of the locally owned cells,
+    //   read through CellKinematics' positions;
+    // - the energy stored in the stress, 1/2 (E^{-1} sigma, sigma): for an
+    //   elastic body 1/2 (E eps(u), eps(u)), lowered by viscous relaxation;
+    // - with damage, the volume where zeta < 1 at the quadrature points.
+    const SymmetricTensor<4, dim> compliance = invert(material.stiffness());
+    const unsigned int            n_nodes    = cell_kinematics.nodes_per_cell();
+    std::vector<double>           norm_square(n_nodes), component(n_nodes),
+      zeta(quadrature.size());
+    for (std::size_t i = owned_cells.size() * c / stress_chunks;
+         i < owned_cells.size() * (c + 1) / stress_chunks;
+         ++i)
+      {
+        const auto &cell    = owned_cells[i];
+        const auto  history = stress_history.get_data(cell);
+        const auto  JxW     = stress_history.JxW(cell);
+        for (unsigned int q = 0; q < history.size(); ++q)
+          sums.energy += 0.5 * (compliance * history[q].stress)
+                         * history[q].stress * JxW[q];
+        sums.von_mises_max
+          = std::max(sums.von_mises_max,
+                     von_mises_norm(cell_average_stress(history, JxW)));
+
+        std::fill(norm_square.begin(), norm_square.end(), 0.);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            cell_kinematics.nodal_values(cell,
+                                         entries,
+                                         d,
+                                         make_array_view(component));
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              norm_square[a] += component[a] * component[a];
+          }
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          {
+            sums.u_square_max = std::max(sums.u_square_max, norm_square[a]);
+            sums.u_finite     = sums.u_finite && std::isfinite(norm_square[a]);
+          }
+
+        if (damage_model.is_active())
+          {
+            cell_kinematics.damage(cell, entries, make_array_view(zeta));
+            for (unsigned int q = 0; q < JxW.size(); ++q)
+              {
+                sums.volume += JxW[q];
+                sums.zeta_finite = sums.zeta_finite && std::isfinite(zeta[q]);
+                if (zeta[q] < 1. - 1e-12)
+                  sums.damaged += JxW[q];
+              }
+          }
+      }
   }
 
 

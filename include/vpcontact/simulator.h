@@ -154,6 +154,14 @@ namespace VPContact
 
     // simulator.cc
     void
+    run_cycle(const unsigned int cycle);
+    unsigned int
+    setup_cycle(const unsigned int cycle);
+    bool
+    march(const unsigned int first_step);
+    void
+    finish_step(const unsigned int n, const double wall_time);
+    void
     check_stability_limits() const;
     void
     compute_initial_state();
@@ -163,13 +171,15 @@ namespace VPContact
     void
     solve_increment(const double time, const bool with_viscoplastic_rate);
     void
+    solve_displacement();
+    bool
+    friction_sets_settled(const double time, const unsigned int iteration);
+    void
     initialize_linear_solver();
     void
     report_solve_floor();
 
     // simulator_cycles.cc
-    void
-    run_cycle(const unsigned int cycle);
     void
     start_cycle(const unsigned int cycle);
     void
@@ -182,6 +192,10 @@ namespace VPContact
     make_mesh();
     void
     setup_dofs();
+    void
+    number_dofs();
+    void
+    setup_displacement_matrix();
     void
     make_constraints(const double                         time,
                      const TrilinosWrappers::MPI::Vector *previous);
@@ -257,6 +271,18 @@ namespace VPContact
     };
     StepMeasures
     measure_step() const;
+    /// The partial sums of measure_step() over one chunk of the cells.
+    struct StepSums
+    {
+      double von_mises_max = 0, u_square_max = 0, energy = 0, damaged = 0,
+             volume = 0;
+      // std::max() passes NaN by: it is counted apart.
+      bool u_finite = true, zeta_finite = true;
+    };
+    void
+    measure_chunk(const unsigned int  c,
+                  const double *const entries,
+                  StepSums           &sums) const;
     void
     check_finite(const StepMeasures &measures, const unsigned int n) const;
     double
@@ -267,6 +293,10 @@ namespace VPContact
     print_header() const;
     void
     postprocess_step(const unsigned int n, const double step_wall_time);
+    std::string
+    add_step_statistics(const unsigned int  n,
+                        const double        step_wall_time,
+                        const StepMeasures &measures);
     void
     add_verification_statistics(std::string                       &line,
                                 const double                       time,
