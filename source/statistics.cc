@@ -1,18 +1,21 @@
-// The statistics table and its CSV form.
+// The statistics table on deal.II's TableHandler, and its CSV form.
 #include <vpcontact/statistics.h>
 
 #include <deal.II/base/exceptions.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <sstream>
+#include <vector>
 
 namespace VPContact
 {
   void
   Statistics::start_row()
   {
-    rows.emplace_back();
+    // TableHandler pads the columns that the last row left empty with the
+    // empty text (every entry here is text).
+    start_new_row();
+    ++rows;
   }
 
 
@@ -47,10 +50,16 @@ namespace VPContact
   void
   Statistics::add_text(const std::string &column, const std::string &text)
   {
-    Assert(!rows.empty(), dealii::ExcMessage("call start_row() first"));
-    if (std::find(columns.begin(), columns.end(), column) == columns.end())
-      columns.push_back(column);
-    rows.back()[column] = text;
+    Assert(rows > 0, dealii::ExcMessage("call start_row() first"));
+    // A column that first appears in a later row is empty above it.
+    if (columns.find(column) == columns.end())
+      {
+        declare_column(column);
+        columns[column].entries.assign(rows - 1,
+                                       dealii::internal::TableEntry(
+                                         std::string()));
+      }
+    TableHandler::add_value(column, text);
   }
 
 
@@ -59,16 +68,16 @@ namespace VPContact
   Statistics::to_csv() const
   {
     std::ostringstream out;
-    for (unsigned int c = 0; c < columns.size(); ++c)
-      out << (c == 0 ? "" : ",") << columns[c];
+    for (unsigned int c = 0; c < column_order.size(); ++c)
+      out << (c == 0 ? "" : ",") << column_order[c];
     out << '\n';
-    for (const auto &row : rows)
+    for (unsigned int r = 0; r < rows; ++r)
       {
-        for (unsigned int c = 0; c < columns.size(); ++c)
+        for (unsigned int c = 0; c < column_order.size(); ++c)
           {
-            const auto entry = row.find(columns[c]);
+            const auto &entries = columns.at(column_order[c]).entries;
             out << (c == 0 ? "" : ",")
-                << (entry == row.end() ? "" : entry->second);
+                << (r < entries.size() ? entries[r].get<std::string>() : "");
           }
         out << '\n';
       }
@@ -80,7 +89,7 @@ namespace VPContact
   unsigned int
   Statistics::n_rows() const
   {
-    return rows.size();
+    return rows;
   }
 
 
@@ -99,23 +108,24 @@ namespace VPContact
           cells.back() += c;
       return cells;
     };
+    *this = Statistics();
     std::istringstream in(csv);
     std::string        line;
-    columns.clear();
-    rows.clear();
     if (!std::getline(in, line))
       return;
-    columns = split(line);
+    const std::vector<std::string> header = split(line);
+    for (const auto &column : header)
+      declare_column(column);
     while (std::getline(in, line))
       {
         const auto cells = split(line);
-        AssertThrow(cells.size() <= columns.size(),
+        AssertThrow(cells.size() <= header.size(),
                     dealii::ExcMessage("A row of the statistics table has "
                                        "more cells than its header."));
-        rows.emplace_back();
+        start_row();
         for (unsigned int c = 0; c < cells.size(); ++c)
           if (!cells[c].empty())
-            rows.back()[columns[c]] = cells[c];
+            add_text(header[c], cells[c]);
       }
   }
 } // namespace VPContact

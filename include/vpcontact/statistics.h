@@ -1,21 +1,24 @@
 // The run's statistics table: one row per time step, one named column per
-// quantity, written as CSV.
+// quantity, kept in deal.II's TableHandler and written as CSV.
 #ifndef vpcontact_statistics_h
 #define vpcontact_statistics_h
 
-#include <map>
+#include <deal.II/base/table_handler.h>
+
 #include <string>
-#include <vector>
 
 namespace VPContact
 {
   /**
-   * A table with one row per time step. Columns appear in the order in which
-   * they are first given a value; a row that has no value for a column
-   * leaves it empty in the CSV. Values are formatted once, when added, with
-   * 10 significant digits.
+   * A deal.II TableHandler with one row per time step, written as the CSV
+   * of statistics.csv (TableHandler writes aligned text and LaTeX, not
+   * CSV). Columns appear in the order in which they are first given a
+   * value; a row that has no value for a column leaves it empty. Values are
+   * formatted once, when added, with 10 significant digits, and kept as
+   * text, so that a table read back from its CSV (a resumed run) writes the
+   * same text again.
    */
-  class Statistics
+  class Statistics : public dealii::TableHandler
   {
   public:
     /// Open a new row; later add_value() calls fill it.
@@ -50,8 +53,7 @@ namespace VPContact
     void
     add_text(const std::string &column, const std::string &text);
 
-    std::vector<std::string>                        columns;
-    std::vector<std::map<std::string, std::string>> rows;
+    unsigned int rows = 0;
   };
 } // namespace VPContact
 
