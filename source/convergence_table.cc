@@ -1,10 +1,14 @@
-// The convergence table: rows, observed orders, CSV and screen formats.
+// The convergence table: rows, observed orders (by deal.II's
+// ConvergenceTable), CSV and screen formats.
 #include <vpcontact/convergence_table.h>
+
+#include <deal.II/base/convergence_table.h>
 
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace VPContact
@@ -41,21 +45,64 @@ namespace VPContact
       std::snprintf(buffer, sizeof(buffer), pattern, value);
       return buffer;
     }
+
+
+
+    // deal.II's ConvergenceTable, for its rates: with the reference column
+    // 1/h and dim = 1, reduction_rate_log2 is log(e_prev/e) / log(h_prev/h).
+    class RateTable : public dealii::ConvergenceTable
+    {
+    public:
+      // The orders of @p errors against the mesh sizes @p h, row by row: NaN
+      // in the first row and where the order is not finite (an error of
+      // zero, or the same mesh twice).
+      std::vector<double>
+      orders(const std::vector<double> &h, const std::vector<double> &errors)
+      {
+        for (unsigned int i = 0; i < h.size(); ++i)
+          {
+            add_value("1/h", 1. / h[i]);
+            add_value("e", errors[i]);
+          }
+        const std::set<std::string> before = keys();
+        evaluate_convergence_rates("e", "1/h", reduction_rate_log2, 1);
+        std::vector<double> result(h.size(),
+                                   std::numeric_limits<double>::quiet_NaN());
+        for (const auto &[key, column] : columns)
+          if (before.count(key) == 0)
+            for (unsigned int i = 1; i < column.entries.size(); ++i)
+              if (std::isfinite(column.entries[i].get_numeric_value()))
+                result[i] = column.entries[i].get_numeric_value();
+        return result;
+      }
+
+    private:
+      std::set<std::string>
+      keys() const
+      {
+        std::set<std::string> result;
+        for (const auto &column : columns)
+          result.insert(column.first);
+        return result;
+      }
+    };
+
+
+
+    // The orders of the error column @p select over the rows of @p table.
+    std::vector<double>
+    orders_of(const std::vector<ConvergenceTable::Row> &table,
+              const Select                             &select)
+    {
+      std::vector<double> h, errors;
+      for (const auto &row : table)
+        {
+          h.push_back(row.h);
+          errors.push_back(select(row));
+        }
+      return RateTable().orders(h, errors);
+    }
   } // namespace
-
-
-
-  double
-  observed_order(const double e_prev,
-                 const double e,
-                 const double h_prev,
-                 const double h)
-  {
-    if (!(e_prev > 0 && e > 0 && h_prev > 0 && h > 0)
-        || std::abs(std::log(h_prev / h)) < 1e-12)
-      return std::numeric_limits<double>::quiet_NaN();
-    return std::log(e_prev / e) / std::log(h_prev / h);
-  }
 
 
 
@@ -81,9 +128,13 @@ namespace VPContact
     std::ostringstream csv;
     csv << "cycle,cells,dofs,h,k,steps,wall_time,cumulative_wall_time,"
            "compared_times";
-    const auto columns = error_columns();
+    const auto                       columns = error_columns();
+    std::vector<std::vector<double>> orders;
     for (const auto &column : columns)
-      csv << ',' << column.first << ',' << column.first << "_order";
+      {
+        csv << ',' << column.first << ',' << column.first << "_order";
+        orders.push_back(orders_of(table, column.second));
+      }
     csv << '\n';
     for (unsigned int i = 0; i < table.size(); ++i)
       {
@@ -93,22 +144,14 @@ namespace VPContact
             << r.steps << ',' << format("%.4f", r.wall_time) << ','
             << format("%.4f", r.cumulative_wall_time) << ','
             << r.compared_times;
-        for (const auto &column : columns)
-          {
-            if (!r.has_errors)
-              {
-                csv << ",,";
-                continue;
-              }
-            const double e = column.second(r);
-            csv << ',' << format("%.10g", e) << ',';
-            if (i > 0 && table[i - 1].has_errors)
-              csv << format("%.4f",
-                            observed_order(column.second(table[i - 1]),
-                                           e,
-                                           table[i - 1].h,
-                                           r.h));
-          }
+        for (unsigned int c = 0; c < columns.size(); ++c)
+          if (r.has_errors)
+            csv << ',' << format("%.10g", columns[c].second(r)) << ','
+                << (i > 0 && table[i - 1].has_errors ?
+                      format("%.4f", orders[c][i]) :
+                      "");
+          else
+            csv << ",,";
         csv << '\n';
       }
     return csv.str();
@@ -126,13 +169,16 @@ namespace VPContact
          << (with_times ? "   time [s]" : "")
          << "   ||eps(e_u)|| order    ||e_sigma|| order     ||e_zeta|| "
             "order            sum order\n";
-    const auto columns = error_columns();
+    const auto                       columns = error_columns();
+    std::vector<std::vector<double>> orders;
+    for (unsigned int c = 0; c < 4; ++c)
+      orders.push_back(orders_of(table, columns[c].second));
     for (unsigned int i = 0; i < table.size(); ++i)
       {
         const Row &r = table[i];
-        char       head[128];
-        std::snprintf(head,
-                      sizeof(head),
+        char       cell[128];
+        std::snprintf(cell,
+                      sizeof(cell),
                       "%5u %8llu %8llu %9.3e %9.3e %6u",
                       r.cycle,
                       r.cells,
@@ -140,28 +186,20 @@ namespace VPContact
                       r.h,
                       r.k,
                       r.steps);
-        text << head;
+        text << cell;
         if (with_times)
           text << format(" %10.3f", r.wall_time);
-        for (unsigned int c = 0; c < 4; ++c)
+        for (unsigned int c = 0; c < 4 && r.has_errors; ++c)
           {
-            if (!r.has_errors)
-              break;
-            const double e = columns[c].second(r);
-            const double order
-              = (i > 0 && table[i - 1].has_errors) ?
-                  observed_order(columns[c].second(table[i - 1]),
-                                 e,
-                                 table[i - 1].h,
-                                 r.h) :
-                  std::numeric_limits<double>::quiet_NaN();
-            char cell[64];
-            std::snprintf(cell, sizeof(cell), " %14.6e", e);
-            text << cell;
+            const std::string order = (i > 0 && table[i - 1].has_errors) ?
+                                        format("%.2f", orders[c][i]) :
+                                        "";
             std::snprintf(cell,
                           sizeof(cell),
-                          " %6s",
-                          format("%.2f", order).c_str());
+                          " %14.6e %*s",
+                          columns[c].second(r),
+                          6,
+                          order.c_str());
             text << cell;
           }
         text << '\n';

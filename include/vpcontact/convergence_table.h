@@ -16,7 +16,8 @@ namespace VPContact
    * the equivalent mesh size (|Omega| / cells)^(1/dim): for uniform
    * refinement the usual order in h, for adaptive meshes the order in
    * (number of cells)^(-1/dim), which makes the two comparable. With k
-   * refined with h, an O(h + k) method shows order 1.
+   * refined with h, an O(h + k) method shows order 1. The orders are
+   * deal.II's ConvergenceTable::reduction_rate_log2 against 1/h.
    */
   class ConvergenceTable
   {
@@ -61,12 +62,6 @@ namespace VPContact
     std::vector<Row> table;
   };
 
-  /// log(e_prev / e) / log(h_prev / h), NaN where it is not defined.
-  double
-  observed_order(const double e_prev,
-                 const double e,
-                 const double h_prev,
-                 const double h);
 } // namespace VPContact
 
 #endif
