@@ -90,8 +90,8 @@ namespace VPContact
                 + "; on strongly stretched cells (aspect ratio above about "
                   "1.4) the lumped matrix is not an M-matrix and the "
                   "iteration need not be monotone, and with a loose "
-                  "Solver/Relative tolerance (1e-6 did this at 512^2 cells; "
-                  "1e-10 is the default) the multipliers are too inexact to "
+                  "Solver/Relative tolerance (1e-10 is the default) the "
+                  "multipliers are too inexact to "
                   "decide the sets. The output up to step "
                 + std::to_string(n - 1) + " is complete in " + output_directory
                 + "."));

@@ -30,8 +30,8 @@ namespace VPContact
         "(Ifpack, or PETSc block Jacobi with ICC), cheap to build and to "
         "apply; the mass term keeps the iterations few while kappa k / h^2 "
         "is small. 'AMG': algebraic multigrid (ML, GAMG), whose iterations "
-        "do not grow with the mesh, for meshes far finer than 512^2 cells "
-        "or where kappa k / h^2 is large.");
+        "do not grow with the mesh, for very fine meshes or where kappa k / "
+        "h^2 is large (doc/performance.md says what each costs).");
       prm.declare_entry(
         "Damage obstacle solver",
         "active set",

@@ -37,8 +37,8 @@ namespace VPContact
    * the shape data of the FESystem, and reads the cell's values through a
    * global-to-local index lookup per entry. What the visit needs is the
    * same in every step while the mesh is fixed, so it is computed once per
-   * mesh here (in 2D with 4 points, 46 doubles' worth per cell: 96 MB at
-   * 512^2 cells, against 1.7 GB for the whole run).
+   * mesh here (in 2D with 4 points, 46 doubles' worth per cell, a small
+   * part of a run's memory).
    *
    * The strain of a vector u at point q is
    * eps(u)(x_q) = sym(sum_a u_a (x) grad N_a(x_q)), with u_a the

@@ -98,8 +98,7 @@ namespace VPContact
      * collective call, which does nothing on a mesh without hanging nodes:
      * deal.II's AffineConstraints::distribute() builds a ghosted copy of
      * the vector and an import for it on every call, even with no
-     * constraint to apply (at 512^2 cells that was a few milliseconds in
-     * each of the 500 damage solves of a run).
+     * constraint to apply, and a run makes hundreds of damage solves.
      */
     void
     distribute_hanging_nodes(TrilinosWrappers::MPI::Vector &owned_vector) const;

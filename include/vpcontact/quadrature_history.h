@@ -70,9 +70,9 @@ namespace VPContact
    * QuadraturePointHistory on the locally owned cells, the same number of
    * points on each: one flat array indexed by the cell's active_cell_index.
    * (deal.II's CellDataStorage does this job too, but looks a cell up in a
-   * std::map and hands out a vector of shared pointers on every call; in a
-   * run that visits every cell several times per step that was 7 % of the
-   * run time.) Valid until the mesh changes; clear() and initialize() set
+   * std::map and hands out a vector of shared pointers on every call, a
+   * cost that a run visiting every cell several times per step pays each
+   * time.) Valid until the mesh changes; clear() and initialize() set
    * it up again on the new mesh.
    *
    * It also keeps the JxW of every point, given once per mesh by
