@@ -17,6 +17,23 @@ namespace VPContact
     // (FrictionActiveSet::write_state() and DamageBounds::write_state() use
     // different components).
     constexpr unsigned int n_checkpoint_vectors = 5;
+
+
+
+    // The counter @p name of @p checkpoint, which a resumed run needs: a
+    // checkpoint.json without it cannot be resumed from, so its absence
+    // ends the run with a message rather than starting from a wrong state.
+    double
+    checkpoint_counter(const CheckpointMetadata &checkpoint,
+                       const std::string        &name)
+    {
+      const auto found = checkpoint.counters.find(name);
+      AssertThrow(found != checkpoint.counters.end(),
+                  ExcMessage("The checkpoint in " + checkpoint.folder
+                             + " has no counter " + name
+                             + " in its checkpoint.json."));
+      return found->second;
+    }
   } // namespace
 
 
@@ -41,6 +58,45 @@ namespace VPContact
       = checkpointing.start_writing(n_cells * (bytes_per_cell + 64) + 65536,
                                     mpi_communicator);
 
+    const std::map<std::string, double> physics_counters
+      = write_checkpoint_fields(folder);
+
+    CheckpointMetadata metadata;
+    metadata.step = n;
+    metadata.time = time_discretization.time(n);
+    // The refinement cycle goes here once the time loop has cycles; a
+    // resumed run would then also start its loop at this cycle.
+    metadata.cycle          = 0;
+    metadata.n_ranks        = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    metadata.n_coarse_cells = triangulation.n_global_coarse_cells();
+    metadata.n_active_cells = triangulation.n_global_active_cells();
+    metadata.n_dofs         = dof_handler.n_dofs();
+    metadata.statistics_csv = statistics.to_csv();
+    // The checkpoint lists the field outputs on disk: the last one must be.
+    output_writer.finish_field_output(mpi_communicator);
+    metadata.field_outputs = output_writer.field_outputs();
+    metadata.counters      = verification.running_maxima();
+    metadata.counters.insert(physics_counters.begin(), physics_counters.end());
+    metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
+    metadata.parameters = checkpointing.problem_parameters();
+    checkpointing.finish_writing(
+      metadata,
+      CheckpointFields::expected_sizes(triangulation, "mesh", bytes_per_cell),
+      mpi_communicator);
+    pcout << "  checkpoint of step " << n << " written to "
+          << checkpointing.folder() << std::endl;
+  }
+
+
+
+  // The fields of a checkpoint, into @p folder/mesh with the distributed
+  // mesh: the vectors listed at n_checkpoint_vectors, in that order, and the
+  // stress history. Returns the counters of the friction and damage
+  // problems, which checkpoint.json holds with the other counters.
+  template <int dim>
+  std::map<std::string, double>
+  Simulator<dim>::write_checkpoint_fields(const std::string &folder)
+  {
     // The state that step n + 1 starts from. The stress predictor and the
     // damage source at the quadrature points are recomputed by the next
     // assembly, but are stored with the stress: the resumed state is then
@@ -78,31 +134,7 @@ namespace VPContact
                            stress_history,
                            quadrature.size(),
                            folder + "/mesh");
-
-    CheckpointMetadata metadata;
-    metadata.step = n;
-    metadata.time = time_discretization.time(n);
-    // The refinement cycle goes here once the time loop has cycles; a
-    // resumed run would then also start its loop at this cycle.
-    metadata.cycle          = 0;
-    metadata.n_ranks        = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    metadata.n_coarse_cells = triangulation.n_global_coarse_cells();
-    metadata.n_active_cells = triangulation.n_global_active_cells();
-    metadata.n_dofs         = dof_handler.n_dofs();
-    metadata.statistics_csv = statistics.to_csv();
-    // The checkpoint lists the field outputs on disk: the last one must be.
-    output_writer.finish_field_output(mpi_communicator);
-    metadata.field_outputs = output_writer.field_outputs();
-    metadata.counters      = verification.running_maxima();
-    metadata.counters.insert(physics_counters.begin(), physics_counters.end());
-    metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
-    metadata.parameters = checkpointing.problem_parameters();
-    checkpointing.finish_writing(
-      metadata,
-      CheckpointFields::expected_sizes(triangulation, "mesh", bytes_per_cell),
-      mpi_communicator);
-    pcout << "  checkpoint of step " << n << " written to "
-          << checkpointing.folder() << std::endl;
+    return physics_counters;
   }
 
 
@@ -190,10 +222,53 @@ namespace VPContact
                            + " degrees of freedom, this run "
                            + std::to_string(dof_handler.n_dofs()) + "."));
 
-    // The fields, in the order write_checkpoint() saved them. The vectors
-    // come back without ghosts; the ghosted copies are made from them.
     TrilinosWrappers::MPI::Vector sets_owned(locally_owned_dofs,
                                              mpi_communicator);
+    read_checkpoint_fields(sets_owned);
+
+    // The active sets, and the constraints as the uninterrupted run has
+    // them after step n: the stick nodes of the restored set (they shape the
+    // matrix, which run() assembles next), and prescribed displacements with
+    // the increment g(t_n) - u_n, zero at the end of a step. The explicit
+    // step rebuilds them for its own time anyway; the implicit step starts
+    // its first Newton correction from them.
+    TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
+                                       locally_relevant_dofs,
+                                       mpi_communicator);
+    sets               = sets_owned;
+    const auto counter = [&](const std::string &name) {
+      return checkpoint_counter(checkpoint, name);
+    };
+    if (friction_problem)
+      friction_problem->read_checkpoint(sets, counter);
+    if (damage_problem)
+      damage_problem->read_checkpoint(sets_owned, counter);
+    make_constraints(time_discretization.time(checkpoint.step), &solution);
+
+    restore_output_records(checkpoint);
+    increment_predictor.recorded(0) = increment_owned;
+    increment_predictor.set_n_recorded(
+      static_cast<unsigned int>(counter("recorded_increments")));
+
+    pcout << "Resuming from the checkpoint in " << folder << ": step "
+          << checkpoint.step << ", t = " << checkpoint.time;
+    if (!output_writer.deterministic_screen_output())
+      pcout << " (written on " << checkpoint.n_ranks << " MPI rank(s))";
+    pcout << '\n' << std::endl;
+    return checkpoint.step;
+  }
+
+
+
+  // The fields of the checkpoint, in the order write_checkpoint_fields()
+  // saved them, and the stress history. The vectors come back without
+  // ghosts; the ghosted copies are made from them. The active sets go into
+  // @p sets_owned, which the friction and damage problems read.
+  template <int dim>
+  void
+  Simulator<dim>::read_checkpoint_fields(
+    TrilinosWrappers::MPI::Vector &sets_owned)
+  {
     const std::vector<TrilinosWrappers::MPI::Vector *> vectors
       = {&solution_owned,
          &increment_owned,
@@ -208,48 +283,22 @@ namespace VPContact
                            quadrature.size());
     solution  = solution_owned;
     increment = increment_owned;
+  }
 
-    // The active sets, and the constraints as the uninterrupted run has
-    // them after step n: the stick nodes of the restored set (they shape the
-    // matrix, which run() assembles next), and prescribed displacements with
-    // the increment g(t_n) - u_n, zero at the end of a step. The explicit
-    // step rebuilds them for its own time anyway; the implicit step starts
-    // its first Newton correction from them.
-    TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
-                                       locally_relevant_dofs,
-                                       mpi_communicator);
-    sets               = sets_owned;
-    const auto counter = [&](const std::string &name) {
-      const auto found = checkpoint.counters.find(name);
-      AssertThrow(found != checkpoint.counters.end(),
-                  ExcMessage("The checkpoint in " + folder + " has no counter "
-                             + name + " in its checkpoint.json."));
-      return found->second;
-    };
-    if (friction_problem)
-      friction_problem->read_checkpoint(sets, counter);
-    if (damage_problem)
-      damage_problem->read_checkpoint(sets_owned, counter);
-    make_constraints(time_discretization.time(checkpoint.step), &solution);
 
-    // What the run has written so far, as it stood at the checkpoint: the
-    // table and the .pvd record continue from there, whatever the stopped
-    // run wrote after it.
+
+  // What the run has written so far, as it stood at @p checkpoint: the
+  // table and the .pvd record continue from there, whatever the stopped
+  // run wrote after it, and so do the running maxima of the verification.
+  template <int dim>
+  void
+  Simulator<dim>::restore_output_records(const CheckpointMetadata &checkpoint)
+  {
     statistics.read_csv(checkpoint.statistics_csv);
     output_writer.write_statistics(statistics, mpi_communicator);
     output_writer.restore_field_outputs(checkpoint.field_outputs,
                                         mpi_communicator);
     verification.restore_running_maxima(checkpoint.counters);
-    increment_predictor.recorded(0) = increment_owned;
-    increment_predictor.set_n_recorded(
-      static_cast<unsigned int>(counter("recorded_increments")));
-
-    pcout << "Resuming from the checkpoint in " << folder << ": step "
-          << checkpoint.step << ", t = " << checkpoint.time;
-    if (!output_writer.deterministic_screen_output())
-      pcout << " (written on " << checkpoint.n_ranks << " MPI rank(s))";
-    pcout << '\n' << std::endl;
-    return checkpoint.step;
   }
 
 

@@ -239,10 +239,22 @@ namespace VPContact
       CellRhs                                              &copy);
 
     // simulator_implicit.cc
+    /// The cell matrix, right-hand side and values of a pass of
+    /// assemble_implicit_system() over the cells.
+    struct ImplicitCellData;
     void
     assemble_implicit_system(const double time);
     void
+    assemble_implicit_cell(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const double                                          k,
+      AssemblyScratch                                      &scratch,
+      ImplicitCellData                                     &data);
+    void
     solve_increment_implicit(const double time);
+    /// Solves for a Newton correction, adds it to du and returns its norm.
+    double
+    apply_newton_correction(const double time, const unsigned int iteration);
 
     // simulator_stress.cc
     void
@@ -314,10 +326,17 @@ namespace VPContact
     load_checkpoint_mesh();
     unsigned int
     restore_checkpoint();
+    void
+    read_checkpoint_fields(TrilinosWrappers::MPI::Vector &sets_owned);
+    void
+    restore_output_records(const CheckpointMetadata &checkpoint);
     bool
     checkpoint_after_step(const unsigned int n);
     void
     write_checkpoint(const unsigned int n);
+    /// Saves the fields of a checkpoint; returns the physics counters.
+    std::map<std::string, double>
+    write_checkpoint_fields(const std::string &folder);
 
     MPI_Comm            mpi_communicator;
     ConditionalOStream  pcout;
