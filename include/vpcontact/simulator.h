@@ -61,6 +61,12 @@ namespace VPContact
    * - simulator_output.cc: statistics, screen and field output;
    * - simulator_checkpoint.cc: writing a checkpoint, and resuming from one.
    *
+   * The optional physics and the study around a run live in classes of
+   * their own, which the simulator builds and calls: DamageProblem (step 4,
+   * damage scenes only), FrictionProblem (Tresca friction, g > 0 only),
+   * ConvergenceStudy (refinement cycles, errors against a reference). The
+   * displacement problem's linear system is a DisplacementSystem.
+   *
    * The unknowns are the displacement, Q1 in every component of one
    * FESystem, and the stress at the quadrature points of the assembly rule.
    * A step solves for the increment du = u_n - u_{n-1} = k w (the paper's
