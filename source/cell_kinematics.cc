@@ -202,6 +202,30 @@ namespace VPContact
 
   template <int dim>
   void
+  CellKinematics<dim>::damage_gradients(
+    const cell_iterator        &cell,
+    const double               *entries,
+    ArrayView<Tensor<1, dim>> &&damage_gradients) const
+  {
+    AssertDimension(damage_gradients.size(), n_q_points);
+    Assert(has_damage(), ExcInternalError());
+    const unsigned int  c    = cell->active_cell_index();
+    const unsigned int *dofs = &positions[c * dofs_per_cell];
+    for (unsigned int q = 0; q < n_q_points; ++q)
+      {
+        const Tensor<1, dim> *grad = &gradients[(c * n_q_points + q) * n_nodes];
+        Tensor<1, dim>        value;
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          if (component_of[i] == dim)
+            value += entries[dofs[i]] * grad[node_of[i]];
+        damage_gradients[q] = value;
+      }
+  }
+
+
+
+  template <int dim>
+  void
   CellKinematics<dim>::nodal_values(const cell_iterator &cell,
                                     const double        *entries,
                                     const unsigned int   component,

@@ -6,6 +6,8 @@
 
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -79,27 +81,38 @@ namespace VPContact
     max_error_sum    = 0;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     final_error      = ErrorNorms{nan, nan, nan};
-    error_indicator.reinit(triangulation);
-    return mesh_refinement.time_step_halvings(first_mesh_size, h);
+    halvings
+      = (cycle > 0 && mesh_refinement.time_step_from_estimate() ?
+           halvings_from_estimate(triangulation.n_global_active_cells()) :
+           mesh_refinement.time_step_halvings(first_mesh_size, h));
+    return halvings;
   }
 
 
 
   template <int dim>
-  bool
-  ConvergenceStudy<dim>::needs_indicators() const
+  unsigned int
+  ConvergenceStudy<dim>::halvings_from_estimate(
+    const unsigned long long cells) const
   {
-    return mesh_refinement.needs_indicators()
-           && current_cycle + 1 < mesh_refinement.n_cycles();
-  }
-
-
-
-  template <int dim>
-  ErrorIndicator<dim> &
-  ConvergenceStudy<dim>::indicator()
-  {
-    return error_indicator;
+    // The time part is proportional to k; the space part of the new mesh is
+    // predicted from the last one's as first order in the equivalent mesh
+    // size. k is halved (or doubled) the whole number of times that brings
+    // the time part nearest to it.
+    const ConvergenceTable::Row &last = convergence_table.rows().back();
+    AssertThrow(last.has_estimate && last.estimate_parts.space > 0
+                  && last.estimate_parts.time > 0,
+                ExcMessage("Mesh refinement/Time step from error estimate: "
+                           "the previous cycle has no space and time parts "
+                           "to choose k from. Set Error estimate/Estimate "
+                           "error = true, or set this entry to false."));
+    const double predicted_space
+      = last.estimate_parts.space
+        * std::pow(static_cast<double>(last.cells) / cells, 1. / dim);
+    const long change
+      = std::lround(std::log2(last.estimate_parts.time / predicted_space));
+    return static_cast<unsigned int>(
+      std::clamp<long>(static_cast<long>(halvings) + change, 0, 30));
   }
 
 
@@ -108,11 +121,10 @@ namespace VPContact
   void
   ConvergenceStudy<dim>::refine(
     parallel::distributed::Triangulation<dim> &triangulation,
+    const Vector<float>                       &indicators,
     const std::set<types::boundary_id>        &contact_boundary_ids)
   {
-    mesh_refinement.refine(triangulation,
-                           error_indicator.values(),
-                           contact_boundary_ids);
+    mesh_refinement.refine(triangulation, indicators, contact_boundary_ids);
   }
 
 
@@ -190,6 +202,7 @@ namespace VPContact
     const parallel::distributed::Triangulation<dim> &triangulation,
     const types::global_dof_index                    n_dofs,
     const TimeDiscretization                        &time,
+    const ErrorEstimator<dim>                       &estimator,
     const double                                     wall_time,
     const std::string                               &base_directory,
     const MPI_Comm                                   communicator)
@@ -212,6 +225,12 @@ namespace VPContact
     row.max_error_sum  = max_error_sum;
     row.final_error    = final_error;
     row.compared_times = compared_times;
+    row.has_estimate   = estimator.is_active();
+    if (row.has_estimate)
+      {
+        row.estimate       = estimator.largest();
+        row.estimate_parts = estimator.largest_parts();
+      }
     convergence_table.add_row(row);
 
     if (mesh_refinement.n_cycles() > 1 || reference_solution.compares())

@@ -106,6 +106,28 @@ namespace VPContact
 
 
 
+  double
+  ConvergenceTable::Row::effectivity() const
+  {
+    return (has_errors && has_estimate && max_error_sum > 0) ?
+             estimate.sum() / max_error_sum :
+             std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+
+  // The estimate columns of the CSV, after the errors: the estimate, its
+  // order, its two parts (each the largest over the steps) and the
+  // effectivity index.
+  static std::string
+  estimate_csv_header()
+  {
+    return ",estimate,estimate_order,estimate_space,estimate_time,"
+           "effectivity";
+  }
+
+
+
   void
   ConvergenceTable::add_row(const Row &row)
   {
@@ -135,7 +157,9 @@ namespace VPContact
         csv << ',' << column.first << ',' << column.first << "_order";
         orders.push_back(orders_of(table, column.second));
       }
-    csv << '\n';
+    const std::vector<double> estimate_orders
+      = orders_of(table, [](const Row &r) { return r.estimate.sum(); });
+    csv << estimate_csv_header() << '\n';
     for (unsigned int i = 0; i < table.size(); ++i)
       {
         const Row &r = table[i];
@@ -152,6 +176,16 @@ namespace VPContact
                       "");
           else
             csv << ",,";
+        if (r.has_estimate)
+          csv << ',' << format("%.10g", r.estimate.sum()) << ','
+              << (i > 0 && table[i - 1].has_estimate ?
+                    format("%.4f", estimate_orders[i]) :
+                    "")
+              << ',' << format("%.10g", r.estimate_parts.space) << ','
+              << format("%.10g", r.estimate_parts.time) << ','
+              << format("%.4f", r.effectivity());
+        else
+          csv << ",,,,,";
         csv << '\n';
       }
     return csv.str();
@@ -168,11 +202,13 @@ namespace VPContact
     text << "cycle    cells     dofs         h         k  steps"
          << (with_times ? "   time [s]" : "")
          << "   ||eps(e_u)|| order    ||e_sigma|| order     ||e_zeta|| "
-            "order            sum order\n";
+            "order            sum order       estimate order   eff.\n";
     const auto                       columns = error_columns();
     std::vector<std::vector<double>> orders;
     for (unsigned int c = 0; c < 4; ++c)
       orders.push_back(orders_of(table, columns[c].second));
+    orders.push_back(
+      orders_of(table, [](const Row &r) { return r.estimate.sum(); }));
     for (unsigned int i = 0; i < table.size(); ++i)
       {
         const Row &r = table[i];
@@ -200,6 +236,22 @@ namespace VPContact
                           columns[c].second(r),
                           6,
                           order.c_str());
+            text << cell;
+          }
+        if (r.has_estimate && !r.has_errors)
+          text << std::string(4 * 22, ' ');
+        if (r.has_estimate)
+          {
+            const std::string order = (i > 0 && table[i - 1].has_estimate) ?
+                                        format("%.2f", orders[4][i]) :
+                                        "";
+            std::snprintf(cell,
+                          sizeof(cell),
+                          " %14.6e %*s %6s",
+                          r.estimate.sum(),
+                          6,
+                          order.c_str(),
+                          format("%.2f", r.effectivity()).c_str());
             text << cell;
           }
         text << '\n';

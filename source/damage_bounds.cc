@@ -42,6 +42,7 @@ namespace VPContact
     communicator = mpi_communicator;
     dofs.clear();
     mass.clear();
+    scale.clear();
     owned.clear();
     ghosted_position.clear();
     owned_position.clear();
@@ -85,6 +86,17 @@ namespace VPContact
 
 
 
+  void
+  DamageBounds::set_complementarity_scale(
+    const TrilinosWrappers::MPI::Vector &diagonal)
+  {
+    scale.resize(dofs.size());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      scale[i] = diagonal(dofs[i]);
+  }
+
+
+
   unsigned int
   DamageBounds::update(const TrilinosWrappers::MPI::Vector &residual,
                        const TrilinosWrappers::MPI::Vector &damage,
@@ -102,9 +114,9 @@ namespace VPContact
       {
         // Weakly active nodes: a hysteresis of 1e-9 in units of zeta.
         constexpr double   hysteresis = 1e-9;
-        const double       c          = mass[i] / time_step;
-        const unsigned int position   = ghosted_position[i];
-        const BoundStatus  next       = box_decision(residual_values[position],
+        const double       c = (scale.empty() ? mass[i] / time_step : scale[i]);
+        const unsigned int position = ghosted_position[i];
+        const BoundStatus  next     = box_decision(residual_values[position],
                                               damage_values[position],
                                               c,
                                               status[i],

@@ -180,6 +180,19 @@ namespace VPContact
     // masking (see DamageSystem::solve()), not by reassembly.
     assemble_matrix();
     system.initialize_preconditioner();
+
+    // The bound iteration's complementarity test is scaled by the matrix
+    // diagonal, which the mass dominates on coarse meshes and the diffusion
+    // on fine ones (see DamageBounds::set_complementarity_scale()).
+    TrilinosWrappers::MPI::Vector diagonal(system.owned(), communicator);
+    for (const auto dof : system.owned())
+      diagonal(dof) = system.matrix().diag_element(dof);
+    diagonal.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector ghosted(system.owned(),
+                                          system.relevant(),
+                                          communicator);
+    ghosted = diagonal;
+    bounds.set_complementarity_scale(ghosted);
   }
 
 

@@ -1,5 +1,5 @@
-// The section "Mesh refinement", the error indicators accumulated over a run,
-// and the refinement of the mesh between cycles.
+// The section "Mesh refinement" and the refinement of the mesh between
+// cycles.
 #include <vpcontact/input_error.h>
 #include <vpcontact/mesh_refinement.h>
 
@@ -7,73 +7,11 @@
 #include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/numerics/error_estimator.h>
 
 #include <cmath>
 
 namespace VPContact
 {
-  template <int dim>
-  void
-  ErrorIndicator<dim>::reinit(const Triangulation<dim> &triangulation)
-  {
-    accumulated.reinit(triangulation.n_active_cells());
-  }
-
-
-
-  template <int dim>
-  void
-  ErrorIndicator<dim>::accumulate(const DoFHandler<dim> &dof_handler,
-                                  const TrilinosWrappers::MPI::Vector &solution,
-                                  const bool   with_damage,
-                                  const double youngs_modulus)
-  {
-    const unsigned int n_components  = dof_handler.get_fe().n_components();
-    const auto        &triangulation = dof_handler.get_triangulation();
-    ComponentMask      displacement(n_components, false);
-    for (unsigned int d = 0; d < dim; ++d)
-      displacement.set(d, true);
-    Vector<float> eta_u(triangulation.n_active_cells());
-    KellyErrorEstimator<dim>::estimate(dof_handler,
-                                       QGauss<dim - 1>(2),
-                                       {},
-                                       solution,
-                                       eta_u,
-                                       displacement);
-    Vector<float> eta_zeta(triangulation.n_active_cells());
-    if (with_damage)
-      {
-        ComponentMask damage(n_components, false);
-        damage.set(dim, true);
-        KellyErrorEstimator<dim>::estimate(dof_handler,
-                                           QGauss<dim - 1>(2),
-                                           {},
-                                           solution,
-                                           eta_zeta,
-                                           damage);
-      }
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const unsigned int i = cell->active_cell_index();
-          const float        eta
-            = (1. + youngs_modulus) * eta_u[i] + cell->diameter() * eta_zeta[i];
-          accumulated[i] = std::max(accumulated[i], eta);
-        }
-  }
-
-
-
-  template <int dim>
-  const Vector<float> &
-  ErrorIndicator<dim>::values() const
-  {
-    return accumulated;
-  }
-
-
-
   template <int dim>
   void
   MeshRefinement<dim>::declare_parameters(ParameterHandler &prm)
@@ -93,9 +31,10 @@ namespace VPContact
                         Patterns::Selection("uniform|adaptive"),
                         "'uniform': every cell is refined between cycles (h "
                         "halves). 'adaptive': cells are refined and "
-                        "coarsened by the error indicators of the previous "
-                        "cycle (Kelly estimator on displacement and damage, "
-                        "largest over the time steps; doc/convergence.md).");
+                        "coarsened by the space part of the error estimate "
+                        "of the previous cycle (section Error estimate; the "
+                        "largest over the time steps of each cell's "
+                        "indicator; doc/convergence.md).");
       prm.declare_entry("Refinement criterion",
                         "fixed fraction",
                         Patterns::Selection("fixed fraction|fixed number"),
@@ -128,6 +67,16 @@ namespace VPContact
         "is the equivalent h = (|Omega| / cells)^(1/dim); k is halved the "
         "nearest whole number of times, which keeps the time grids of all "
         "cycles nested.");
+      prm.declare_entry(
+        "Time step from error estimate",
+        "false",
+        Patterns::Bool(),
+        "Adaptive only; replaces 'Refine time step with mesh'. Choose each "
+        "cycle's time step from the error estimate of the previous one: "
+        "halve or double Time/Time step until the time part, which is "
+        "proportional to k, is expected to equal the space part on the new "
+        "mesh (the previous space part scaled by the ratio of equivalent "
+        "mesh sizes). k stays on the dyadic grid of Time/Time step.");
     }
     prm.leave_subsection();
   }
@@ -147,7 +96,16 @@ namespace VPContact
     coarsen_fraction = prm.get_double("Coarsening fraction");
     maximum_level    = prm.get_integer("Maximum level");
     refine_time_step = prm.get_bool("Refine time step with mesh");
+    step_from_estimate = prm.get_bool("Time step from error estimate");
     prm.leave_subsection();
+
+    VPContactCheckParameter(!step_from_estimate
+                              || refinement == Strategy::adaptive,
+                            "Mesh refinement/Time step from error estimate",
+                            std::string("true"),
+                            "it applies to adaptive cycles only (Strategy = "
+                            "uniform refines k with h). Set it to false or "
+                            "use Strategy = adaptive.");
 
     VPContactCheckParameter(
       refine_fraction + coarsen_fraction <= 1.,
@@ -228,6 +186,15 @@ namespace VPContact
     if (!refine_time_step || h >= h_first)
       return 0;
     return static_cast<unsigned int>(std::lround(std::log2(h_first / h)));
+  }
+
+
+
+  template <int dim>
+  bool
+  MeshRefinement<dim>::time_step_from_estimate() const
+  {
+    return step_from_estimate;
   }
 
 
@@ -328,7 +295,10 @@ namespace VPContact
       text += "adaptive refinement (" + to_text(refine_fraction)
               + (fixed_fraction ? " of the indicator" : " of the cells")
               + " refined, " + to_text(coarsen_fraction) + " coarsened)";
-    return text + (refine_time_step ? ", k proportional to h" : ", k fixed");
+    return text
+           + (step_from_estimate ? ", k from the error estimate" :
+              refine_time_step   ? ", k proportional to h" :
+                                   ", k fixed");
   }
 
 
@@ -347,8 +317,6 @@ namespace VPContact
 
 
 
-  template class ErrorIndicator<2>;
-  template class ErrorIndicator<3>;
   template class MeshRefinement<2>;
   template class MeshRefinement<3>;
   template double

@@ -53,6 +53,7 @@ namespace VPContact
     IncrementPredictor::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
+    ErrorEstimator<dim>::declare_parameters(prm);
     ConvergenceStudy<dim>::declare_parameters(prm);
     Checkpointing::declare_parameters(prm);
   }
@@ -69,10 +70,13 @@ namespace VPContact
     // view, and an input error thrown while the simulator is built does not
     // trigger TimerOutput's collective clean-up in its destructor.
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    // Smoothing keeps one level of difference at vertices and fills
+    // unrefined islands; it does not undo a refinement flag on a cell whose
+    // neighbours stay coarse (smoothing_on_coarsening would, and a single
+    // cell at a singular corner is what the indicators flag first).
     , triangulation(communicator,
                     typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement
-                      | Triangulation<dim>::smoothing_on_coarsening))
+                      Triangulation<dim>::smoothing_on_refinement))
     , fe(make_finite_element<dim>(prm))
     , quadrature(2)
     , dof_handler(triangulation)
@@ -90,6 +94,7 @@ namespace VPContact
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
+    error_estimator.parse_parameters(prm);
     convergence_study.parse_parameters(prm,
                                        output_writer.directory(),
                                        time_discretization);
@@ -97,6 +102,14 @@ namespace VPContact
       convergence_study.refinement().finest_refinements(
         geometry.global_refinements()));
     checkpointing.parse_parameters(prm);
+    VPContactCheckParameter(
+      error_estimator.is_active()
+        || !convergence_study.refinement().needs_indicators(),
+      "Error estimate/Estimate error",
+      std::string("false"),
+      "adaptive cycles refine by the estimate's cell "
+      "indicators. Set it to true, or use Mesh "
+      "refinement/Strategy = uniform.");
     if (damage_model.is_active())
       damage_problem
         = std::make_unique<DamageProblem<dim>>(prm,
@@ -207,13 +220,14 @@ namespace VPContact
     if (march(first_step))
       return;
     output_writer.finish_field_output(mpi_communicator);
-    print_summary();
+    print_summary(timer.wall_time());
     if (output_writer.report_solve_floor())
       report_solve_floor();
     timer.stop();
     convergence_study.finish_cycle(triangulation,
                                    dof_handler.n_dofs(),
                                    time_discretization,
+                                   error_estimator,
                                    timer.wall_time()
                                      - convergence_study.diagnostics_time(),
                                    output_writer.base_directory(),
@@ -298,18 +312,27 @@ namespace VPContact
   void
   Simulator<dim>::finish_step(const unsigned int n, const double wall_time)
   {
-    // Statistics and output of step n; adaptive cycles judge the mesh by
-    // indicators over the whole run (see ErrorIndicator), and the last
-    // cycle has no next mesh to choose.
-    postprocess_step(n, wall_time);
-    if (convergence_study.needs_indicators())
-      {
-        TimerOutput::Scope t(computing_timer, "Error indicators");
-        convergence_study.indicator().accumulate(dof_handler,
-                                                 solution,
-                                                 damage_model.is_active(),
-                                                 material.youngs_modulus());
-      }
+    // The error estimate of step n (which also gives adaptive cycles their
+    // indicators), then its statistics and output.
+    postprocess_step(n, wall_time, estimate_error(n));
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  Simulator<dim>::estimate_error(const unsigned int n)
+  {
+    if (!error_estimator.is_active())
+      return {std::numeric_limits<double>::quiet_NaN(),
+              std::numeric_limits<double>::quiet_NaN()};
+    TimerOutput::Scope t(computing_timer, "Error estimate");
+    return error_estimator.estimate_step(n,
+                                         time_discretization.step_size(),
+                                         cell_kinematics.local_entries(
+                                           solution),
+                                         *viscoplastic_law,
+                                         material.youngs_modulus());
   }
 
 

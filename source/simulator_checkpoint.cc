@@ -77,6 +77,11 @@ namespace VPContact
     metadata.field_outputs = output_writer.field_outputs();
     metadata.counters      = verification.running_maxima();
     metadata.counters.insert(physics_counters.begin(), physics_counters.end());
+    if (error_estimator.is_active())
+      {
+        const auto maxima = error_estimator.running_maxima();
+        metadata.counters.insert(maxima.begin(), maxima.end());
+      }
     metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(
@@ -299,6 +304,8 @@ namespace VPContact
     output_writer.restore_field_outputs(checkpoint.field_outputs,
                                         mpi_communicator);
     verification.restore_running_maxima(checkpoint.counters);
+    if (error_estimator.is_active())
+      error_estimator.restore_running_maxima(checkpoint.counters);
   }
 
 

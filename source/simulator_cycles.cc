@@ -55,6 +55,7 @@ namespace VPContact
     // cycle starts from t = 0 and sets them up again.
     stress_history.clear();
     convergence_study.refine(triangulation,
+                             error_estimator.cell_indicators(),
                              boundary_conditions.contact_boundary_ids());
   }
 

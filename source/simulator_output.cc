@@ -242,8 +242,9 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::postprocess_step(const unsigned int n,
-                                   const double       step_wall_time)
+  Simulator<dim>::postprocess_step(const unsigned int   n,
+                                   const double         step_wall_time,
+                                   const ErrorEstimate &estimate)
   {
     TimerOutput::Scope t(computing_timer, "Postprocess and output");
     const double       time = time_discretization.time(n);
@@ -261,6 +262,11 @@ namespace VPContact
       compute_cell_stresses(von_mises, components);
 
     std::string line = add_step_statistics(n, step_wall_time, measures);
+    if (error_estimator.is_active())
+      {
+        statistics.add_value("estimate_space", estimate.space);
+        statistics.add_value("estimate_time", estimate.time);
+      }
     if (damage_model.is_active())
       damage_problem->add_statistics(statistics,
                                      line,
@@ -422,9 +428,22 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::print_summary() const
+  Simulator<dim>::print_summary(const double wall_time) const
   {
     pcout << '\n' << verification.summary();
+    if (error_estimator.is_active())
+      {
+        // The estimate next to the run time: what a result is worth and
+        // what it cost.
+        const ErrorEstimate largest = error_estimator.largest();
+        pcout << "Estimated error (Theorem 2's norm, largest over the steps): "
+              << format("%.3e", largest.sum()) << " (space "
+              << format("%.3e", largest.space) << ", time "
+              << format("%.3e", largest.time) << ")";
+        if (!output_writer.deterministic_screen_output())
+          pcout << " in " << format("%.3g", wall_time) << " s of run time";
+        pcout << '\n';
+      }
     if (damage_model.is_active())
       pcout << "Damage bounds 0 <= zeta <= 1 at every node and step: largest "
                "violation "

@@ -93,6 +93,20 @@ namespace VPContact
            const double        *entries,
            ArrayView<double>  &&damage) const;
 
+    /// The gradient of the damage of @p entries at the points of @p cell.
+    void
+    damage_gradients(const cell_iterator        &cell,
+                     const double               *entries,
+                     ArrayView<Tensor<1, dim>> &&gradients) const;
+
+    /// The value of scalar shape function @p a at point @p q (the same on
+    /// every cell).
+    double
+    shape_value(const unsigned int q, const unsigned int a) const
+    {
+      return shape_values[q * n_nodes + a];
+    }
+
     /**
      * Component @p component of @p entries at the nodes of @p cell (for
      * Q1, its vertices), in the order of the scalar element's shape

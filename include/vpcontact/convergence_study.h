@@ -4,6 +4,7 @@
 #define vpcontact_convergence_study_h
 
 #include <vpcontact/convergence_table.h>
+#include <vpcontact/error_estimator.h>
 #include <vpcontact/mesh_refinement.h>
 #include <vpcontact/reference_solution.h>
 #include <vpcontact/statistics.h>
@@ -23,7 +24,7 @@ namespace VPContact
   /**
    * Everything a run does across its refinement cycles, apart from the run
    * of a cycle itself: the mesh of the next cycle (MeshRefinement, from the
-   * ErrorIndicator accumulated over a cycle), the time step of each cycle,
+   * ErrorEstimator's cell indicators of a cycle), the time step of each cycle,
    * the snapshots written for a later comparison and the errors of Theorem
    * 2 against a reference run (ReferenceSolution), and the ConvergenceTable
    * with the run time of each cycle. See doc/convergence.md.
@@ -61,17 +62,10 @@ namespace VPContact
     start_cycle(const unsigned int                               cycle,
                 const parallel::distributed::Triangulation<dim> &triangulation);
 
-    /// Whether this cycle accumulates error indicators (adaptive cycles
-    /// but the last).
-    bool
-    needs_indicators() const;
-
-    ErrorIndicator<dim> &
-    indicator();
-
-    /// The next cycle's mesh from the indicators.
+    /// The next cycle's mesh from the cell @p indicators of this one.
     void
     refine(parallel::distributed::Triangulation<dim> &triangulation,
+           const Vector<float>                       &indicators,
            const std::set<types::boundary_id>        &contact_boundary_ids);
 
     /**
@@ -93,12 +87,14 @@ namespace VPContact
     double
     diagnostics_time() const;
 
-    /// The cycle's row of the table (also to convergence.csv in
+    /// The cycle's row of the table, with the error estimate of
+    /// @p estimator if it is active (also to convergence.csv in
     /// @p base_directory, by rank 0, with cycles or a reference).
     void
     finish_cycle(const parallel::distributed::Triangulation<dim> &triangulation,
                  const types::global_dof_index                    n_dofs,
                  const TimeDiscretization                        &time,
+                 const ErrorEstimator<dim>                       &estimator,
                  const double                                     wall_time,
                  const std::string &base_directory,
                  const MPI_Comm     communicator);
@@ -110,13 +106,17 @@ namespace VPContact
                const bool         deterministic) const;
 
   private:
+    unsigned int
+    halvings_from_estimate(const unsigned long long cells) const;
+
     MeshRefinement<dim> mesh_refinement;
-    ErrorIndicator<dim> error_indicator;
     ReferenceSolution   reference_solution;
     ConvergenceTable    convergence_table;
     unsigned int        current_cycle = 0;
     /// The equivalent mesh size of the first cycle (for k proportional to h).
     double first_mesh_size = 0;
+    /// How often the current cycle halves Time/Time step.
+    unsigned int halvings = 0;
     /// The errors against the reference in the current cycle: the largest
     /// over the common times, their sum's largest, and those at T.
     ErrorNorms   max_error, final_error;

@@ -3,6 +3,7 @@
 #ifndef vpcontact_convergence_table_h
 #define vpcontact_convergence_table_h
 
+#include <vpcontact/error_estimator.h>
 #include <vpcontact/reference_solution.h>
 
 #include <string>
@@ -43,6 +44,13 @@ namespace VPContact
       ErrorNorms final_error;
       /// The number of common times the maximum was taken over.
       unsigned int compared_times = 0;
+      /// The run's error estimate: the one whose sum is the largest over
+      /// the steps, and the largest of each part on its own.
+      bool          has_estimate = false;
+      ErrorEstimate estimate, estimate_parts;
+      /// estimate.sum() / max_error_sum (NaN without errors or estimate).
+      double
+      effectivity() const;
     };
 
     void

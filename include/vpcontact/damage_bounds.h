@@ -79,12 +79,22 @@ namespace VPContact
                  TrilinosWrappers::MPI::Vector       &change) const;
 
     /**
+     * The scale c_i of the complementarity test of update(): the ghosted
+     * @p diagonal of the damage matrix, K_ii = m_i/k + kappa A_ii (laid out
+     * like the lumped mass). Without it, update() takes c_i = m_i/k, which
+     * is too small beside kappa A_ii where kappa k / h^2 is large: the sets
+     * then trade nodes between iterations instead of settling.
+     */
+    void
+    set_complementarity_scale(const TrilinosWrappers::MPI::Vector &diagonal);
+
+    /**
      * The next sets from the ghosted @p residual and @p damage (laid out
-     * like the lumped mass given to setup()), with
-     * c = m_i / k (the diagonal of M/k) and the hysteresis tolerance
-     * 1e-9 c (a change of the damage of 1e-9, far below anything the
-     * model resolves). Returns the number of nodes that changed set, on all
-     * ranks.
+     * like the lumped mass given to setup()), with the scale c_i of
+     * set_complementarity_scale() (or m_i / k, the diagonal of M/k) and the
+     * hysteresis tolerance 1e-9 c (a change of the damage of 1e-9, far
+     * below anything the model resolves). Returns the number of nodes that
+     * changed set, on all ranks.
      */
     unsigned int
     update(const TrilinosWrappers::MPI::Vector &residual,
@@ -147,7 +157,9 @@ namespace VPContact
   private:
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  mass;
-    std::vector<bool>                    owned;
+    /// c_i of set_complementarity_scale() (empty: m_i / k).
+    std::vector<double> scale;
+    std::vector<bool>   owned;
     /// Positions of the nodes in the local storage of a ghosted vector laid
     /// out like the lumped mass (n_ghosted entries), and among the owned
     /// entries (owned nodes only).

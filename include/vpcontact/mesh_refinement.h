@@ -1,6 +1,6 @@
 // Refinement between runs: the section "Mesh refinement" (how many cycles,
-// uniform or adaptive, by which criterion), the error indicators accumulated
-// over a run, and the next mesh and time step they lead to.
+// uniform or adaptive, by which criterion), and the next mesh and time step
+// that the error indicators of a run lead to.
 #ifndef vpcontact_mesh_refinement_h
 #define vpcontact_mesh_refinement_h
 
@@ -8,7 +8,6 @@
 #include <deal.II/base/types.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <set>
@@ -16,53 +15,6 @@
 namespace VPContact
 {
   using namespace dealii;
-
-  /**
-   * Per-cell error indicators of one run, accumulated over its time steps.
-   *
-   * At every step the Kelly estimator gives, for each cell K, the jumps of
-   * the normal derivatives of the displacement (eta_u) and, in damage
-   * scenes, of the damage (eta_zeta) across K's faces. They are combined in
-   * the units of the error of the paper's Theorem 2,
-   *   ||eps(u - u_h)||_Q + ||sigma - sigma_h||_Q + ||zeta - zeta_h||_L2,
-   * as eta_K = (1 + E) eta_u + h_K eta_zeta: the strain error is of the
-   * size of the gradient jumps, the stress error is E times that (sigma_h =
-   * E eps(u_h) plus a history that is smooth within a cell), and the L2
-   * error of the damage is one power of h below its gradient error.
-   *
-   * The indicator of a run is the largest over its steps, eta_K = max_n
-   * eta_K,n: the theorem bounds the error at the worst time, and fronts that
-   * move (the damage front, the slip front) leave a trace on every cell
-   * they cross, which an indicator taken at the final time alone forgets.
-   */
-  template <int dim>
-  class ErrorIndicator
-  {
-  public:
-    /// Zero indicators for the active cells of the current mesh.
-    void
-    reinit(const Triangulation<dim> &triangulation);
-
-    /**
-     * Add step n: the Kelly indicators of the ghosted @p solution (the
-     * displacement in the first dim components, the damage in component dim
-     * when @p with_damage), weighted by the stiffness scale @p youngs_modulus.
-     */
-    void
-    accumulate(const DoFHandler<dim>               &dof_handler,
-               const TrilinosWrappers::MPI::Vector &solution,
-               const bool                           with_damage,
-               const double                         youngs_modulus);
-
-    /// max_n eta_K,n on the locally owned cells (0 elsewhere).
-    const Vector<float> &
-    values() const;
-
-  private:
-    Vector<float> accumulated;
-  };
-
-
 
   /**
    * Section "Mesh refinement": a sequence of runs ("cycles") over the whole
@@ -117,6 +69,11 @@ namespace VPContact
     unsigned int
     time_step_halvings(const double h_first, const double h) const;
 
+    /// Whether adaptive cycles choose their time step from the error
+    /// estimate of the previous cycle (see ConvergenceStudy::start_cycle()).
+    bool
+    time_step_from_estimate() const;
+
     /**
      * Refine @p triangulation for the next cycle: globally (uniform), or by
      * the indicators @p indicators (adaptive), never beyond Maximum level.
@@ -138,13 +95,14 @@ namespace VPContact
     flag_adaptively(parallel::distributed::Triangulation<dim> &triangulation,
                     const Vector<float> &indicators) const;
 
-    unsigned int cycles           = 1;
-    Strategy     refinement       = Strategy::uniform;
-    bool         fixed_fraction   = true;
-    double       refine_fraction  = 0.3;
-    double       coarsen_fraction = 0.;
-    unsigned int maximum_level    = 10;
-    bool         refine_time_step = true;
+    unsigned int cycles             = 1;
+    Strategy     refinement         = Strategy::uniform;
+    bool         fixed_fraction     = true;
+    double       refine_fraction    = 0.3;
+    double       coarsen_fraction   = 0.;
+    unsigned int maximum_level      = 10;
+    bool         refine_time_step   = true;
+    bool         step_from_estimate = false;
   };
 
   /// The equivalent mesh size (|Omega| / number of cells)^(1/dim), the cell

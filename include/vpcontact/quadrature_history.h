@@ -30,12 +30,15 @@ namespace VPContact
     SymmetricTensor<2, dim> predictor;
     /// phi_{n-1}, the damage source of the current step (damage scenes).
     double damage_source = 0;
+    /// G_0, the viscoplastic rate of the initial state, to which the time
+    /// part of the error estimate refers (ErrorEstimator).
+    SymmetricTensor<2, dim> initial_rate;
 
     /// The number of doubles that write_to() and read_from() use; a
     /// checkpoint stores this many per quadrature point. A new member must
     /// be added to all three.
     static constexpr unsigned int n_values
-      = 2 * SymmetricTensor<2, dim>::n_independent_components + 1;
+      = 3 * SymmetricTensor<2, dim>::n_independent_components + 1;
 
     /// Copy every member into @p values (n_values of them), for checkpoints.
     void
@@ -47,6 +50,7 @@ namespace VPContact
         {
           *values++ = stress.access_raw_entry(c);
           *values++ = predictor.access_raw_entry(c);
+          *values++ = initial_rate.access_raw_entry(c);
         }
       *values = damage_source;
     }
@@ -59,8 +63,9 @@ namespace VPContact
            c < SymmetricTensor<2, dim>::n_independent_components;
            ++c)
         {
-          stress.access_raw_entry(c)    = *values++;
-          predictor.access_raw_entry(c) = *values++;
+          stress.access_raw_entry(c)       = *values++;
+          predictor.access_raw_entry(c)    = *values++;
+          initial_rate.access_raw_entry(c) = *values++;
         }
       damage_source = *values;
     }

@@ -11,6 +11,7 @@
 #include <vpcontact/damage_problem.h>
 #include <vpcontact/displacement_system.h>
 #include <vpcontact/elastic_material.h>
+#include <vpcontact/error_estimator.h>
 #include <vpcontact/friction_problem.h>
 #include <vpcontact/geometry.h>
 #include <vpcontact/increment_predictor.h>
@@ -167,6 +168,8 @@ namespace VPContact
     march(const unsigned int first_step);
     void
     finish_step(const unsigned int n, const double wall_time);
+    ErrorEstimate
+    estimate_error(const unsigned int n);
     void
     check_stability_limits() const;
     void
@@ -310,7 +313,9 @@ namespace VPContact
     void
     print_header() const;
     void
-    postprocess_step(const unsigned int n, const double step_wall_time);
+    postprocess_step(const unsigned int   n,
+                     const double         step_wall_time,
+                     const ErrorEstimate &estimate);
     std::string
     add_step_statistics(const unsigned int  n,
                         const double        step_wall_time,
@@ -325,7 +330,7 @@ namespace VPContact
                  const Vector<double>              &von_mises,
                  const std::vector<Vector<double>> &components);
     void
-    print_summary() const;
+    print_summary(const double wall_time) const;
 
     // simulator_checkpoint.cc
     void
@@ -364,6 +369,7 @@ namespace VPContact
     OutputWriter<dim>                     output_writer;
     Verification<dim>                     verification;
     ConvergenceStudy<dim>                 convergence_study;
+    ErrorEstimator<dim>                   error_estimator;
     /// The diagonal of the body's bounding box, the scale of the
     /// displacement safeguard in check_finite().
     double        body_size = 0;

@@ -1,0 +1,164 @@
+// The a posteriori estimate of a run's error in the norm of the paper's
+// Theorem 2, computed after every step: a space part from the recovery of
+// the stress, the strain and the damage gradient, and a time part from the
+// quadrature error of the forward Euler step (doc/convergence.md).
+#ifndef vpcontact_error_estimator_h
+#define vpcontact_error_estimator_h
+
+#include <vpcontact/cell_kinematics.h>
+#include <vpcontact/quadrature_history.h>
+#include <vpcontact/viscoplastic_law.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_block_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /// An estimate of the error of Theorem 2 at one time, or its largest
+  /// over the steps: a space part and a time part.
+  struct ErrorEstimate
+  {
+    double space = 0;
+    double time  = 0;
+    double
+    sum() const
+    {
+      return space + time;
+    }
+  };
+
+  /**
+   * The estimate of the error of the discrete solution at t_n in the norm
+   * of Theorem 2,
+   *   ||eps(u_n - u_n^hk)|| + ||sigma_n - sigma_n^hk|| + ||zeta_n -
+   *   zeta_n^hk||,
+   * and its largest over the steps.
+   *
+   * Space part (Zienkiewicz-Zhu): the stress, the strain and the damage
+   * gradient, which jump between cells, are projected onto continuous Q1
+   * fields (an L2 projection with the lumped mass; at hanging nodes, the
+   * constraints of the mesh). The distance between the recovered field and
+   * the discrete one estimates the error of each: ||sigma* - sigma_h||,
+   * ||eps* - eps(u_h)|| and, for the damage, whose L2 error is one power of
+   * h below its gradient's, (h_K / pi) ||g* - grad zeta_h|| on each cell.
+   *
+   * Time part: the elastic part of the stress update is exact in time; the
+   * forward Euler step integrates the viscoplastic rate by the left
+   * rectangle rule, whose error at t_n is (k/2)(G(t_n) - G(0)) + O(k^2).
+   * The time part is its L2 norm, (k/2) ||G_n - G_0||, times (1 + 1/E):
+   * equilibrium passes at most that stress error on to the strain, divided
+   * by E.
+   *
+   * The per-cell space indicators (largest over the steps) drive adaptive
+   * refinement; the time part chooses the next cycle's time step.
+   */
+  template <int dim>
+  class ErrorEstimator
+  {
+  public:
+    using cell_iterator = typename DoFHandler<dim>::active_cell_iterator;
+
+    /// Section "Error estimate".
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether the run estimates its error.
+    bool
+    is_active() const;
+
+    /**
+     * On a new mesh: the recovery space (scalar Q1 on @p triangulation),
+     * its constraints and lumped mass, for the locally owned cells
+     * @p owned_cells and the data of @p kinematics and @p history, which
+     * must stay valid until the next setup().
+     */
+    void
+    setup(const parallel::distributed::Triangulation<dim> &triangulation,
+          const std::vector<cell_iterator>                &owned_cells,
+          const CellKinematics<dim>                       &kinematics,
+          StressHistory<dim>                              &history);
+
+    /**
+     * The estimate at t_n, for the step size @p k and the local entries
+     * @p entries of the ghosted solution u_n (and zeta_n, in damage
+     * scenes); at n = 0 it stores the initial rate G_0 at every point.
+     * Collective.
+     */
+    ErrorEstimate
+    estimate_step(const unsigned int          n,
+                  const double                k,
+                  const double               *entries,
+                  const ViscoplasticLaw<dim> &law,
+                  const double                youngs_modulus);
+
+    /// The estimate whose sum is the largest over the steps so far.
+    ErrorEstimate
+    largest() const;
+
+    /// max_n of each part on its own.
+    ErrorEstimate
+    largest_parts() const;
+
+    /// max_n of the space indicator of each locally owned cell.
+    const Vector<float> &
+    cell_indicators() const;
+
+    /// The largest values so far, for a checkpoint.
+    std::map<std::string, double>
+    running_maxima() const;
+    void
+    restore_running_maxima(const std::map<std::string, double> &maxima);
+
+  private:
+    /// The squared norms of one cell, for the sums of the space and time
+    /// parts.
+    struct CellNorms
+    {
+      double stress = 0, strain = 0, damage = 0, time = 0;
+    };
+    void
+    project_to_nodes(const double *entries);
+    CellNorms
+    cell_norms(const std::size_t           i,
+               const double               *entries,
+               const ViscoplasticLaw<dim> &law,
+               const bool                  initial);
+
+    bool active = true;
+
+    const parallel::distributed::Triangulation<dim> *triangulation = nullptr;
+    const std::vector<cell_iterator>                *cells         = nullptr;
+    const CellKinematics<dim>                       *kinematics    = nullptr;
+    StressHistory<dim>                              *history       = nullptr;
+    bool                                             with_damage   = false;
+
+    FE_Q<dim>                 recovery_fe{1};
+    DoFHandler<dim>           recovery_dofs;
+    AffineConstraints<double> constraints;
+    /// The recovered fields, one block per component: the stress, the
+    /// strain (n_independent_components each) and, with damage, the damage
+    /// gradient (dim).
+    LinearAlgebra::distributed::BlockVector<double> recovered;
+    LinearAlgebra::distributed::Vector<double>      lumped_mass;
+    /// The local indices (owned and ghost) of the nodes of each owned cell.
+    std::vector<unsigned int> node_indices;
+
+    ErrorEstimate largest_sum, largest_part;
+    Vector<float> indicators;
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,364 @@
+// ErrorEstimator: the section "Error estimate", the recovery of stress,
+// strain and damage gradient on continuous Q1 fields, and the space and time
+// parts of the estimate of every step.
+#include <vpcontact/error_estimator.h>
+
+#include <deal.II/base/parallel.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <cmath>
+
+namespace VPContact
+{
+  namespace
+  {
+    template <int dim>
+    constexpr unsigned int n_tensor
+      = SymmetricTensor<2, dim>::n_independent_components;
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Error estimate");
+    prm.declare_entry(
+      "Estimate error",
+      "true",
+      Patterns::Bool(),
+      "Estimate the error of the run in the norm of the paper's Theorem 2 "
+      "after every step: a space part (recovery of stress, strain and "
+      "damage gradient) and a time part (the error of the forward Euler "
+      "quadrature of the viscoplastic rate). It is printed at the end of "
+      "the run, written to statistics.csv and convergence.csv, and drives "
+      "adaptive cycles (doc/convergence.md).");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Error estimate");
+    active = prm.get_bool("Estimate error");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  bool
+  ErrorEstimator<dim>::is_active() const
+  {
+    return active;
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::setup(
+    const parallel::distributed::Triangulation<dim> &tria,
+    const std::vector<cell_iterator>                &owned_cells,
+    const CellKinematics<dim>                       &cell_kinematics,
+    StressHistory<dim>                              &stress_history)
+  {
+    // A scalar Q1 space on the mesh; its owned and ghost nodes hold the
+    // recovered fields, one block per component.
+    triangulation = &tria;
+    cells         = &owned_cells;
+    kinematics    = &cell_kinematics;
+    history       = &stress_history;
+    with_damage   = cell_kinematics.has_damage();
+    recovery_dofs.reinit(tria);
+    recovery_dofs.distribute_dofs(recovery_fe);
+    const IndexSet owned = recovery_dofs.locally_owned_dofs();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(recovery_dofs, relevant);
+    constraints.clear();
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(recovery_dofs, constraints);
+    constraints.close();
+
+    const MPI_Comm communicator = tria.get_communicator();
+    lumped_mass.reinit(owned, relevant, communicator);
+    recovered.reinit(2 * n_tensor<dim> + (with_damage ? dim : 0));
+    for (unsigned int b = 0; b < recovered.n_blocks(); ++b)
+      recovered.block(b).reinit(owned, relevant, communicator);
+    recovered.collect_sizes();
+
+    // The nodes of every owned cell, by global index, and the lumped mass
+    // sum_K int_K phi_i (condensed onto the nodes that carry the values
+    // where the mesh has hanging nodes).
+    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    node_indices.resize(owned_cells.size() * n_nodes);
+    std::vector<types::global_dof_index> dofs(n_nodes);
+    Vector<double>                       cell_mass(n_nodes);
+    for (std::size_t i = 0; i < owned_cells.size(); ++i)
+      {
+        const typename DoFHandler<dim>::active_cell_iterator cell(
+          &tria,
+          owned_cells[i]->level(),
+          owned_cells[i]->index(),
+          &recovery_dofs);
+        cell->get_dof_indices(dofs);
+        const auto JxW = stress_history.JxW(owned_cells[i]);
+        cell_mass      = 0;
+        for (unsigned int q = 0; q < JxW.size(); ++q)
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            cell_mass(a) += cell_kinematics.shape_value(q, a) * JxW[q];
+        constraints.distribute_local_to_global(cell_mass, dofs, lumped_mass);
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          node_indices[i * n_nodes + a] = dofs[a];
+      }
+    lumped_mass.compress(VectorOperation::add);
+    indicators.reinit(tria.n_active_cells());
+    largest_sum  = ErrorEstimate();
+    largest_part = ErrorEstimate();
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::project_to_nodes(const double *entries)
+  {
+    // sum_K int_K phi_i q_h for every component q of the recovered fields,
+    // divided by the lumped mass; hanging nodes then take their parents'
+    // average. The loop adds into shared nodes and runs on one thread.
+    recovered                  = 0;
+    const unsigned int n_q     = history->JxW((*cells)[0]).size();
+    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    std::vector<SymmetricTensor<2, dim>> strains(n_q);
+    std::vector<Tensor<1, dim>>          gradients(n_q);
+    std::vector<types::global_dof_index> dofs(n_nodes);
+    std::vector<Vector<double>>          cell_vectors(recovered.n_blocks(),
+                                             Vector<double>(n_nodes));
+    for (std::size_t i = 0; i < cells->size(); ++i)
+      {
+        const auto &cell = (*cells)[i];
+        kinematics->strains(cell, entries, make_array_view(strains));
+        if (with_damage)
+          kinematics->damage_gradients(cell,
+                                       entries,
+                                       make_array_view(gradients));
+        const auto points = history->get_data(cell);
+        const auto JxW    = history->JxW(cell);
+        for (auto &v : cell_vectors)
+          v = 0;
+        for (unsigned int q = 0; q < n_q; ++q)
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            {
+              const double w = kinematics->shape_value(q, a) * JxW[q];
+              for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+                {
+                  cell_vectors[c](a)
+                    += w * points[q].stress.access_raw_entry(c);
+                  cell_vectors[n_tensor<dim> + c](a)
+                    += w * strains[q].access_raw_entry(c);
+                }
+              if (with_damage)
+                for (unsigned int d = 0; d < dim; ++d)
+                  cell_vectors[2 * n_tensor<dim> + d](a) += w * gradients[q][d];
+            }
+        std::copy_n(node_indices.begin() + i * n_nodes, n_nodes, dofs.begin());
+        for (unsigned int b = 0; b < recovered.n_blocks(); ++b)
+          constraints.distribute_local_to_global(cell_vectors[b],
+                                                 dofs,
+                                                 recovered.block(b));
+      }
+    recovered.compress(VectorOperation::add);
+    for (unsigned int b = 0; b < recovered.n_blocks(); ++b)
+      {
+        auto &block = recovered.block(b);
+        for (unsigned int j = 0; j < block.locally_owned_size(); ++j)
+          if (lumped_mass.local_element(j) > 0)
+            block.local_element(j) /= lumped_mass.local_element(j);
+        constraints.distribute(block);
+      }
+    recovered.update_ghost_values();
+  }
+
+
+
+  template <int dim>
+  typename ErrorEstimator<dim>::CellNorms
+  ErrorEstimator<dim>::cell_norms(const std::size_t           i,
+                                  const double               *entries,
+                                  const ViscoplasticLaw<dim> &law,
+                                  const bool                  initial)
+  {
+    // The squared distances between the recovered and the discrete fields
+    // on cell i, and the squared norm of G_n - G_0 (at n = 0, G_0 is
+    // stored instead).
+    const auto        &cell    = (*cells)[i];
+    const auto         points  = history->get_data(cell);
+    const auto         JxW     = history->JxW(cell);
+    const unsigned int n_q     = JxW.size();
+    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    std::array<SymmetricTensor<2, dim>, 8> strains;
+    std::array<Tensor<1, dim>, 8>          gradients;
+    std::array<double, 8>                  damage;
+    damage.fill(1.);
+    kinematics->strains(cell,
+                        entries,
+                        make_array_view(&strains[0], &strains[0] + n_q));
+    if (with_damage)
+      {
+        kinematics->damage_gradients(cell,
+                                     entries,
+                                     make_array_view(&gradients[0],
+                                                     &gradients[0] + n_q));
+        kinematics->damage(cell,
+                           entries,
+                           make_array_view(&damage[0], &damage[0] + n_q));
+      }
+    CellNorms norms;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        SymmetricTensor<2, dim> stress_star, strain_star;
+        Tensor<1, dim>          gradient_star;
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          {
+            const auto   node = node_indices[i * n_nodes + a];
+            const double N    = kinematics->shape_value(q, a);
+            for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+              {
+                stress_star.access_raw_entry(c) += N * recovered.block(c)(node);
+                strain_star.access_raw_entry(c)
+                  += N * recovered.block(n_tensor<dim> + c)(node);
+              }
+            if (with_damage)
+              for (unsigned int d = 0; d < dim; ++d)
+                gradient_star[d]
+                  += N * recovered.block(2 * n_tensor<dim> + d)(node);
+          }
+        const auto stress_error = stress_star - points[q].stress;
+        const auto strain_error = strain_star - strains[q];
+        norms.stress += scalar_product(stress_error, stress_error) * JxW[q];
+        norms.strain += scalar_product(strain_error, strain_error) * JxW[q];
+        if (with_damage)
+          norms.damage += (gradient_star - gradients[q]).norm_square() * JxW[q];
+        const auto rate = law.rate(points[q].stress, strains[q], damage[q]);
+        if (initial)
+          points[q].initial_rate = rate;
+        const auto change = rate - points[q].initial_rate;
+        norms.time += scalar_product(change, change) * JxW[q];
+      }
+    const double h_over_pi = cell->diameter() / numbers::PI;
+    norms.damage *= h_over_pi * h_over_pi;
+    return norms;
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  ErrorEstimator<dim>::estimate_step(const unsigned int          n,
+                                     const double                k,
+                                     const double               *entries,
+                                     const ViscoplasticLaw<dim> &law,
+                                     const double                youngs_modulus)
+  {
+    project_to_nodes(entries);
+    // The cells' norms in the threads, then summed in the cells' order (the
+    // same bits with any number of threads).
+    std::vector<CellNorms> norms(cells->size());
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      cells->size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          norms[i] = cell_norms(i, entries, law, n == 0);
+      },
+      64);
+    double sums[4] = {0, 0, 0, 0};
+    for (std::size_t i = 0; i < norms.size(); ++i)
+      {
+        const CellNorms &c = norms[i];
+        sums[0] += c.stress;
+        sums[1] += c.strain;
+        sums[2] += c.damage;
+        sums[3] += c.time;
+        const float eta
+          = std::sqrt(c.stress) + std::sqrt(c.strain) + std::sqrt(c.damage);
+        const unsigned int index = (*cells)[i]->active_cell_index();
+        indicators[index]        = std::max(indicators[index], eta);
+      }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 4),
+                        triangulation->get_communicator(),
+                        ArrayView<double>(sums, 4));
+    ErrorEstimate estimate;
+    estimate.space
+      = std::sqrt(sums[0]) + std::sqrt(sums[1]) + std::sqrt(sums[2]);
+    estimate.time = (1. + 1. / youngs_modulus) * 0.5 * k * std::sqrt(sums[3]);
+    if (estimate.sum() > largest_sum.sum())
+      largest_sum = estimate;
+    largest_part.space = std::max(largest_part.space, estimate.space);
+    largest_part.time  = std::max(largest_part.time, estimate.time);
+    return estimate;
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  ErrorEstimator<dim>::largest() const
+  {
+    return largest_sum;
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  ErrorEstimator<dim>::largest_parts() const
+  {
+    return largest_part;
+  }
+
+
+
+  template <int dim>
+  const Vector<float> &
+  ErrorEstimator<dim>::cell_indicators() const
+  {
+    return indicators;
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, double>
+  ErrorEstimator<dim>::running_maxima() const
+  {
+    return {{"estimate_space", largest_sum.space},
+            {"estimate_time", largest_sum.time},
+            {"estimate_space_max", largest_part.space},
+            {"estimate_time_max", largest_part.time}};
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::restore_running_maxima(
+    const std::map<std::string, double> &maxima)
+  {
+    const auto value = [&](const std::string &name) {
+      const auto found = maxima.find(name);
+      return found == maxima.end() ? 0. : found->second;
+    };
+    largest_sum  = {value("estimate_space"), value("estimate_time")};
+    largest_part = {value("estimate_space_max"), value("estimate_time_max")};
+  }
+
+
+
+  template class ErrorEstimator<2>;
+  template class ErrorEstimator<3>;
+} // namespace VPContact
