@@ -95,10 +95,12 @@ namespace VPContact
   ConvergenceStudy<dim>::halvings_from_estimate(
     const unsigned long long cells) const
   {
-    // The time part is proportional to k; the space part of the new mesh is
-    // predicted from the last one's as first order in the equivalent mesh
-    // size. k is halved (or doubled) the whole number of times that brings
-    // the time part nearest to it.
+    // The time part T is proportional to k; the space part S of the new
+    // mesh is predicted from the last one's as first order in the
+    // equivalent mesh size, S ~ cells^(-1/dim). A run costs about cells/k,
+    // and the cheapest (cells, k) for a given S + T has T = S/dim. k is
+    // halved (or doubled) the whole number of times that brings T nearest
+    // to that.
     const ConvergenceTable::Row &last = convergence_table.rows().back();
     AssertThrow(last.has_estimate && last.estimate_parts.space > 0
                   && last.estimate_parts.time > 0,
@@ -109,8 +111,8 @@ namespace VPContact
     const double predicted_space
       = last.estimate_parts.space
         * std::pow(static_cast<double>(last.cells) / cells, 1. / dim);
-    const long change
-      = std::lround(std::log2(last.estimate_parts.time / predicted_space));
+    const long change = std::lround(
+      std::log2(dim * last.estimate_parts.time / predicted_space));
     return static_cast<unsigned int>(
       std::clamp<long>(static_cast<long>(halvings) + change, 0, 30));
   }

@@ -128,6 +128,24 @@ namespace VPContact
 
 
 
+  // The estimate columns of the screen table for @p row: the estimate, its
+  // @p order and the effectivity index (after blank error columns where the
+  // row has no errors).
+  static std::string
+  estimate_text(const ConvergenceTable::Row &row, const double order)
+  {
+    char cell[128];
+    std::snprintf(cell,
+                  sizeof(cell),
+                  " %14.6e %6s %6s",
+                  row.estimate.sum(),
+                  format("%.2f", order).c_str(),
+                  format("%.2f", row.effectivity()).c_str());
+    return (row.has_errors ? "" : std::string(4 * 22, ' ')) + cell;
+  }
+
+
+
   void
   ConvergenceTable::add_row(const Row &row)
   {
@@ -238,22 +256,11 @@ namespace VPContact
                           order.c_str());
             text << cell;
           }
-        if (r.has_estimate && !r.has_errors)
-          text << std::string(4 * 22, ' ');
         if (r.has_estimate)
-          {
-            const std::string order = (i > 0 && table[i - 1].has_estimate) ?
-                                        format("%.2f", orders[4][i]) :
-                                        "";
-            std::snprintf(cell,
-                          sizeof(cell),
-                          " %14.6e %*s %6s",
-                          r.estimate.sum(),
-                          6,
-                          order.c_str(),
-                          format("%.2f", r.effectivity()).c_str());
-            text << cell;
-          }
+          text << estimate_text(r,
+                                i > 0 && table[i - 1].has_estimate ?
+                                  orders[4][i] :
+                                  std::numeric_limits<double>::quiet_NaN());
         text << '\n';
       }
     return text.str();

@@ -2,6 +2,7 @@
 // strain and damage gradient on continuous Q1 fields, and the space and time
 // parts of the estimate of every step.
 #include <vpcontact/error_estimator.h>
+#include <vpcontact/input_error.h>
 
 #include <deal.II/base/parallel.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -41,11 +42,18 @@ namespace VPContact
 
   template <int dim>
   void
-  ErrorEstimator<dim>::parse_parameters(ParameterHandler &prm)
+  ErrorEstimator<dim>::parse_parameters(ParameterHandler &prm,
+                                        const bool        for_adaptive_cycles)
   {
     prm.enter_subsection("Error estimate");
     active = prm.get_bool("Estimate error");
     prm.leave_subsection();
+    VPContactCheckParameter(active || !for_adaptive_cycles,
+                            "Error estimate/Estimate error",
+                            std::string("false"),
+                            "adaptive cycles refine by the estimate's cell "
+                            "indicators. Set it to true, or use Mesh "
+                            "refinement/Strategy = uniform.");
   }
 
 
@@ -186,6 +194,34 @@ namespace VPContact
 
 
   template <int dim>
+  void
+  ErrorEstimator<dim>::recovered_values(const std::size_t        i,
+                                        const unsigned int       q,
+                                        SymmetricTensor<2, dim> &stress,
+                                        SymmetricTensor<2, dim> &strain,
+                                        Tensor<1, dim>          &gradient) const
+  {
+    // The recovered fields at point q of cell i: sum_a N_a(x_q) v_a.
+    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    for (unsigned int a = 0; a < n_nodes; ++a)
+      {
+        const auto   node = node_indices[i * n_nodes + a];
+        const double N    = kinematics->shape_value(q, a);
+        for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+          {
+            stress.access_raw_entry(c) += N * recovered.block(c)(node);
+            strain.access_raw_entry(c)
+              += N * recovered.block(n_tensor<dim> + c)(node);
+          }
+        if (with_damage)
+          for (unsigned int d = 0; d < dim; ++d)
+            gradient[d] += N * recovered.block(2 * n_tensor<dim> + d)(node);
+      }
+  }
+
+
+
+  template <int dim>
   typename ErrorEstimator<dim>::CellNorms
   ErrorEstimator<dim>::cell_norms(const std::size_t           i,
                                   const double               *entries,
@@ -195,11 +231,10 @@ namespace VPContact
     // The squared distances between the recovered and the discrete fields
     // on cell i, and the squared norm of G_n - G_0 (at n = 0, G_0 is
     // stored instead).
-    const auto        &cell    = (*cells)[i];
-    const auto         points  = history->get_data(cell);
-    const auto         JxW     = history->JxW(cell);
-    const unsigned int n_q     = JxW.size();
-    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    const auto                            &cell   = (*cells)[i];
+    const auto                             points = history->get_data(cell);
+    const auto                             JxW    = history->JxW(cell);
+    const unsigned int                     n_q    = JxW.size();
     std::array<SymmetricTensor<2, dim>, 8> strains;
     std::array<Tensor<1, dim>, 8>          gradients;
     std::array<double, 8>                  damage;
@@ -222,21 +257,7 @@ namespace VPContact
       {
         SymmetricTensor<2, dim> stress_star, strain_star;
         Tensor<1, dim>          gradient_star;
-        for (unsigned int a = 0; a < n_nodes; ++a)
-          {
-            const auto   node = node_indices[i * n_nodes + a];
-            const double N    = kinematics->shape_value(q, a);
-            for (unsigned int c = 0; c < n_tensor<dim>; ++c)
-              {
-                stress_star.access_raw_entry(c) += N * recovered.block(c)(node);
-                strain_star.access_raw_entry(c)
-                  += N * recovered.block(n_tensor<dim> + c)(node);
-              }
-            if (with_damage)
-              for (unsigned int d = 0; d < dim; ++d)
-                gradient_star[d]
-                  += N * recovered.block(2 * n_tensor<dim> + d)(node);
-          }
+        recovered_values(i, q, stress_star, strain_star, gradient_star);
         const auto stress_error = stress_star - points[q].stress;
         const auto strain_error = strain_star - strains[q];
         norms.stress += scalar_product(stress_error, stress_error) * JxW[q];

@@ -58,6 +58,20 @@ namespace VPContact
                         "No cell is refined beyond this many levels above "
                         "the coarse mesh (including Geometry/Global "
                         "refinements).");
+    }
+    prm.leave_subsection();
+    declare_time_step_entries(prm);
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::declare_time_step_entries(ParameterHandler &prm)
+  {
+    // How each cycle's time step follows from the mesh or the estimate.
+    prm.enter_subsection("Mesh refinement");
+    {
       prm.declare_entry(
         "Refine time step with mesh",
         "true",
@@ -72,11 +86,13 @@ namespace VPContact
         "false",
         Patterns::Bool(),
         "Adaptive only; replaces 'Refine time step with mesh'. Choose each "
-        "cycle's time step from the error estimate of the previous one: "
-        "halve or double Time/Time step until the time part, which is "
-        "proportional to k, is expected to equal the space part on the new "
-        "mesh (the previous space part scaled by the ratio of equivalent "
-        "mesh sizes). k stays on the dyadic grid of Time/Time step.");
+        "cycle's time step from the error estimate of the previous one: k "
+        "is halved the whole number of times (never fewer than 0) that "
+        "brings the time part, proportional to k, nearest to 1/dim of the "
+        "space part expected on the new mesh (the previous one scaled by "
+        "the ratio of equivalent mesh sizes): the cheapest split of the "
+        "error when the run's cost is cells/k and the space part is first "
+        "order in h (doc/convergence.md).");
     }
     prm.leave_subsection();
   }

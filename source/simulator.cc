@@ -94,7 +94,6 @@ namespace VPContact
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
-    error_estimator.parse_parameters(prm);
     convergence_study.parse_parameters(prm,
                                        output_writer.directory(),
                                        time_discretization);
@@ -102,14 +101,8 @@ namespace VPContact
       convergence_study.refinement().finest_refinements(
         geometry.global_refinements()));
     checkpointing.parse_parameters(prm);
-    VPContactCheckParameter(
-      error_estimator.is_active()
-        || !convergence_study.refinement().needs_indicators(),
-      "Error estimate/Estimate error",
-      std::string("false"),
-      "adaptive cycles refine by the estimate's cell "
-      "indicators. Set it to true, or use Mesh "
-      "refinement/Strategy = uniform.");
+    error_estimator
+      .parse_parameters(prm, convergence_study.refinement().needs_indicators());
     if (damage_model.is_active())
       damage_problem
         = std::make_unique<DamageProblem<dim>>(prm,

@@ -72,8 +72,10 @@ namespace VPContact
     /// Section "Error estimate".
     static void
     declare_parameters(ParameterHandler &prm);
+    /// @p for_adaptive_cycles: the run refines by the cell indicators (then
+    /// the estimate may not be switched off).
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const bool for_adaptive_cycles);
 
     /// Whether the run estimates its error.
     bool
@@ -131,6 +133,12 @@ namespace VPContact
     };
     void
     project_to_nodes(const double *entries);
+    void
+    recovered_values(const std::size_t        i,
+                     const unsigned int       q,
+                     SymmetricTensor<2, dim> &stress,
+                     SymmetricTensor<2, dim> &strain,
+                     Tensor<1, dim>          &gradient) const;
     CellNorms
     cell_norms(const std::size_t           i,
                const double               *entries,

@@ -38,6 +38,8 @@ namespace VPContact
 
     static void
     declare_parameters(ParameterHandler &prm);
+    static void
+    declare_time_step_entries(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
 
