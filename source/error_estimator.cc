@@ -104,6 +104,8 @@ namespace VPContact
     // where the mesh has hanging nodes).
     const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
     node_indices.resize(owned_cells.size() * n_nodes);
+    node_locals.resize(owned_cells.size() * n_nodes);
+    has_constraints.assign(owned_cells.size(), false);
     std::vector<types::global_dof_index> dofs(n_nodes);
     Vector<double>                       cell_mass(n_nodes);
     for (std::size_t i = 0; i < owned_cells.size(); ++i)
@@ -121,7 +123,13 @@ namespace VPContact
             cell_mass(a) += cell_kinematics.shape_value(q, a) * JxW[q];
         constraints.distribute_local_to_global(cell_mass, dofs, lumped_mass);
         for (unsigned int a = 0; a < n_nodes; ++a)
-          node_indices[i * n_nodes + a] = dofs[a];
+          {
+            node_indices[i * n_nodes + a] = dofs[a];
+            node_locals[i * n_nodes + a]
+              = lumped_mass.get_partitioner()->global_to_local(dofs[a]);
+            has_constraints[i]
+              = has_constraints[i] || constraints.is_constrained(dofs[a]);
+          }
       }
     lumped_mass.compress(VectorOperation::add);
     indicators.reinit(tria.n_active_cells());
@@ -133,51 +141,96 @@ namespace VPContact
 
   template <int dim>
   void
+  ErrorEstimator<dim>::cell_moments(const std::size_t i,
+                                    const double     *entries,
+                                    double           *moments) const
+  {
+    // int_K phi_a q_h for every node a of cell i and every component q of
+    // the recovered fields, at moments[block * n_nodes + a].
+    const auto        &cell    = (*cells)[i];
+    const auto         points  = history->get_data(cell);
+    const auto         JxW     = history->JxW(cell);
+    const unsigned int n_q     = JxW.size();
+    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    std::array<SymmetricTensor<2, dim>, 8> strains;
+    std::array<Tensor<1, dim>, 8>          gradients;
+    kinematics->strains(cell,
+                        entries,
+                        make_array_view(&strains[0], &strains[0] + n_q));
+    if (with_damage)
+      kinematics->damage_gradients(cell,
+                                   entries,
+                                   make_array_view(&gradients[0],
+                                                   &gradients[0] + n_q));
+    std::fill(moments, moments + recovered.n_blocks() * n_nodes, 0.);
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int a = 0; a < n_nodes; ++a)
+        {
+          const double w = kinematics->shape_value(q, a) * JxW[q];
+          for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+            {
+              moments[c * n_nodes + a]
+                += w * points[q].stress.access_raw_entry(c);
+              moments[(n_tensor<dim> + c) * n_nodes + a]
+                += w * strains[q].access_raw_entry(c);
+            }
+          if (with_damage)
+            for (unsigned int d = 0; d < dim; ++d)
+              moments[(2 * n_tensor<dim> + d) * n_nodes + a]
+                += w * gradients[q][d];
+        }
+  }
+
+
+
+  template <int dim>
+  void
   ErrorEstimator<dim>::project_to_nodes(const double *entries)
   {
     // sum_K int_K phi_i q_h for every component q of the recovered fields,
     // divided by the lumped mass; hanging nodes then take their parents'
-    // average. The loop adds into shared nodes and runs on one thread.
-    recovered                  = 0;
-    const unsigned int n_q     = history->JxW((*cells)[0]).size();
-    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
-    std::vector<SymmetricTensor<2, dim>> strains(n_q);
-    std::vector<Tensor<1, dim>>          gradients(n_q);
+    // average.
+    recovered = 0;
+    // The cells' integrals in the threads, each into its own slice of
+    // moments, then added into the nodes in the cells' order.
+    const unsigned int  n_nodes  = recovery_fe.n_dofs_per_cell();
+    const unsigned int  n_blocks = recovered.n_blocks();
+    std::vector<double> moments(cells->size() * n_blocks * n_nodes);
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      cells->size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          cell_moments(i, entries, &moments[i * n_blocks * n_nodes]);
+      },
+      64);
     std::vector<types::global_dof_index> dofs(n_nodes);
-    std::vector<Vector<double>>          cell_vectors(recovered.n_blocks(),
-                                             Vector<double>(n_nodes));
+    Vector<double>                       cell_vector(n_nodes);
     for (std::size_t i = 0; i < cells->size(); ++i)
       {
-        const auto &cell = (*cells)[i];
-        kinematics->strains(cell, entries, make_array_view(strains));
-        if (with_damage)
-          kinematics->damage_gradients(cell,
-                                       entries,
-                                       make_array_view(gradients));
-        const auto points = history->get_data(cell);
-        const auto JxW    = history->JxW(cell);
-        for (auto &v : cell_vectors)
-          v = 0;
-        for (unsigned int q = 0; q < n_q; ++q)
-          for (unsigned int a = 0; a < n_nodes; ++a)
-            {
-              const double w = kinematics->shape_value(q, a) * JxW[q];
-              for (unsigned int c = 0; c < n_tensor<dim>; ++c)
-                {
-                  cell_vectors[c](a)
-                    += w * points[q].stress.access_raw_entry(c);
-                  cell_vectors[n_tensor<dim> + c](a)
-                    += w * strains[q].access_raw_entry(c);
-                }
-              if (with_damage)
-                for (unsigned int d = 0; d < dim; ++d)
-                  cell_vectors[2 * n_tensor<dim> + d](a) += w * gradients[q][d];
-            }
-        std::copy_n(node_indices.begin() + i * n_nodes, n_nodes, dofs.begin());
-        for (unsigned int b = 0; b < recovered.n_blocks(); ++b)
-          constraints.distribute_local_to_global(cell_vectors[b],
-                                                 dofs,
-                                                 recovered.block(b));
+        const double *cell_moments = &moments[i * n_blocks * n_nodes];
+        // Most cells have no hanging node: their sums go straight into the
+        // local storage; the others through the constraints.
+        if (!has_constraints[i])
+          for (unsigned int b = 0; b < n_blocks; ++b)
+            for (unsigned int a = 0; a < n_nodes; ++a)
+              recovered.block(b).local_element(node_locals[i * n_nodes + a])
+                += cell_moments[b * n_nodes + a];
+        else
+          {
+            std::copy_n(node_indices.begin() + i * n_nodes,
+                        n_nodes,
+                        dofs.begin());
+            for (unsigned int b = 0; b < n_blocks; ++b)
+              {
+                std::copy_n(cell_moments + b * n_nodes,
+                            n_nodes,
+                            cell_vector.begin());
+                constraints.distribute_local_to_global(cell_vector,
+                                                       dofs,
+                                                       recovered.block(b));
+              }
+          }
       }
     recovered.compress(VectorOperation::add);
     for (unsigned int b = 0; b < recovered.n_blocks(); ++b)
@@ -205,17 +258,19 @@ namespace VPContact
     const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
     for (unsigned int a = 0; a < n_nodes; ++a)
       {
-        const auto   node = node_indices[i * n_nodes + a];
+        const auto   node = node_locals[i * n_nodes + a];
         const double N    = kinematics->shape_value(q, a);
         for (unsigned int c = 0; c < n_tensor<dim>; ++c)
           {
-            stress.access_raw_entry(c) += N * recovered.block(c)(node);
+            stress.access_raw_entry(c)
+              += N * recovered.block(c).local_element(node);
             strain.access_raw_entry(c)
-              += N * recovered.block(n_tensor<dim> + c)(node);
+              += N * recovered.block(n_tensor<dim> + c).local_element(node);
           }
         if (with_damage)
           for (unsigned int d = 0; d < dim; ++d)
-            gradient[d] += N * recovered.block(2 * n_tensor<dim> + d)(node);
+            gradient[d]
+              += N * recovered.block(2 * n_tensor<dim> + d).local_element(node);
       }
   }
 

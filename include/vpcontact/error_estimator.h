@@ -132,6 +132,10 @@ namespace VPContact
       double stress = 0, strain = 0, damage = 0, time = 0;
     };
     void
+    cell_moments(const std::size_t i,
+                 const double     *entries,
+                 double           *moments) const;
+    void
     project_to_nodes(const double *entries);
     void
     recovered_values(const std::size_t        i,
@@ -161,8 +165,12 @@ namespace VPContact
     /// gradient (dim).
     LinearAlgebra::distributed::BlockVector<double> recovered;
     LinearAlgebra::distributed::Vector<double>      lumped_mass;
-    /// The local indices (owned and ghost) of the nodes of each owned cell.
-    std::vector<unsigned int> node_indices;
+    /// The nodes of each owned cell: global indices, their positions in the
+    /// local storage (owned and ghost) of the recovered fields, and whether
+    /// the cell has a constrained (hanging) node.
+    std::vector<types::global_dof_index> node_indices;
+    std::vector<unsigned int>            node_locals;
+    std::vector<bool>                    has_constraints;
 
     ErrorEstimate largest_sum, largest_part;
     Vector<float> indicators;
