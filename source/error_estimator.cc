@@ -99,28 +99,40 @@ namespace VPContact
       recovered.block(b).reinit(owned, relevant, communicator);
     recovered.collect_sizes();
 
+    setup_nodes_and_mass();
+    indicators.reinit(tria.n_active_cells());
+    largest_sum  = ErrorEstimate();
+    largest_part = ErrorEstimate();
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::setup_nodes_and_mass()
+  {
     // The nodes of every owned cell, by global index, and the lumped mass
     // sum_K int_K phi_i (condensed onto the nodes that carry the values
     // where the mesh has hanging nodes).
     const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
-    node_indices.resize(owned_cells.size() * n_nodes);
-    node_locals.resize(owned_cells.size() * n_nodes);
-    has_constraints.assign(owned_cells.size(), false);
+    node_indices.resize((*cells).size() * n_nodes);
+    node_locals.resize((*cells).size() * n_nodes);
+    has_constraints.assign((*cells).size(), false);
     std::vector<types::global_dof_index> dofs(n_nodes);
     Vector<double>                       cell_mass(n_nodes);
-    for (std::size_t i = 0; i < owned_cells.size(); ++i)
+    for (std::size_t i = 0; i < (*cells).size(); ++i)
       {
         const typename DoFHandler<dim>::active_cell_iterator cell(
-          &tria,
-          owned_cells[i]->level(),
-          owned_cells[i]->index(),
+          triangulation,
+          (*cells)[i]->level(),
+          (*cells)[i]->index(),
           &recovery_dofs);
         cell->get_dof_indices(dofs);
-        const auto JxW = stress_history.JxW(owned_cells[i]);
+        const auto JxW = history->JxW((*cells)[i]);
         cell_mass      = 0;
         for (unsigned int q = 0; q < JxW.size(); ++q)
           for (unsigned int a = 0; a < n_nodes; ++a)
-            cell_mass(a) += cell_kinematics.shape_value(q, a) * JxW[q];
+            cell_mass(a) += kinematics->shape_value(q, a) * JxW[q];
         constraints.distribute_local_to_global(cell_mass, dofs, lumped_mass);
         for (unsigned int a = 0; a < n_nodes; ++a)
           {
@@ -132,9 +144,6 @@ namespace VPContact
           }
       }
     lumped_mass.compress(VectorOperation::add);
-    indicators.reinit(tria.n_active_cells());
-    largest_sum  = ErrorEstimate();
-    largest_part = ErrorEstimate();
   }
 
 

@@ -132,6 +132,8 @@ namespace VPContact
       double stress = 0, strain = 0, damage = 0, time = 0;
     };
     void
+    setup_nodes_and_mass();
+    void
     cell_moments(const std::size_t i,
                  const double     *entries,
                  double           *moments) const;
