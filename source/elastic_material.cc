@@ -97,6 +97,7 @@ namespace VPContact
                        * outer_product(unit_symmetric_tensor<dim>(),
                                        unit_symmetric_tensor<dim>())
                      + 2. * mu * identity_tensor<dim>();
+    compliance_tensor = invert(elastic_tensor);
   }
 
 
@@ -106,6 +107,15 @@ namespace VPContact
   ElasticMaterial<dim>::stiffness() const
   {
     return elastic_tensor;
+  }
+
+
+
+  template <int dim>
+  const SymmetricTensor<4, dim> &
+  ElasticMaterial<dim>::compliance() const
+  {
+    return compliance_tensor;
   }
 
 

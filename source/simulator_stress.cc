@@ -253,9 +253,9 @@ namespace VPContact
     // - the energy stored in the stress, 1/2 (E^{-1} sigma, sigma): for an
     //   elastic body 1/2 (E eps(u), eps(u)), lowered by viscous relaxation;
     // - with damage, the volume where zeta < 1 at the quadrature points.
-    const SymmetricTensor<4, dim> compliance = invert(material.stiffness());
-    const unsigned int            n_nodes    = cell_kinematics.nodes_per_cell();
-    std::vector<double>           norm_square(n_nodes), component(n_nodes),
+    const SymmetricTensor<4, dim> &compliance = material.compliance();
+    const unsigned int             n_nodes = cell_kinematics.nodes_per_cell();
+    std::vector<double>            norm_square(n_nodes), component(n_nodes),
       zeta(quadrature.size());
     for (std::size_t i = owned_cells.size() * c / stress_chunks;
          i < owned_cells.size() * (c + 1) / stress_chunks;

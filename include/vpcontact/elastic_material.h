@@ -49,6 +49,10 @@ namespace VPContact
     const SymmetricTensor<4, dim> &
     stiffness() const;
 
+    /// Its inverse E^{-1}, computed once with it.
+    const SymmetricTensor<4, dim> &
+    compliance() const;
+
     /// The stress E eps for a strain eps.
     SymmetricTensor<2, dim>
     stress(const SymmetricTensor<2, dim> &strain) const;
@@ -75,6 +79,7 @@ namespace VPContact
     double                  nu         = 0.;
     PlaneHypothesis         hypothesis = PlaneHypothesis::plane_stress;
     SymmetricTensor<4, dim> elastic_tensor;
+    SymmetricTensor<4, dim> compliance_tensor;
   };
 } // namespace VPContact
 
