@@ -99,6 +99,11 @@ namespace VPContact
       recovered.block(b).reinit(owned, relevant, communicator);
     recovered.collect_sizes();
 
+    AssertThrow(owned_cells.empty()
+                  || stress_history.JxW(owned_cells[0]).size()
+                       <= PointValues::max_points,
+                ExcMessage("ErrorEstimator: more quadrature points per cell "
+                           "than it is built for."));
     setup_nodes_and_mass();
     indicators.reinit(tria.n_active_cells());
     largest_sum  = ErrorEstimate();
@@ -150,6 +155,36 @@ namespace VPContact
 
   template <int dim>
   void
+  ErrorEstimator<dim>::evaluate_points(const std::size_t i,
+                                       const double     *entries,
+                                       PointValues      &values) const
+  {
+    // The strain, damage gradient and damage of the solution at the points
+    // of cell i (zeta = 1 without damage).
+    const auto        &cell = (*cells)[i];
+    const unsigned int n_q  = history->JxW(cell).size();
+    kinematics->strains(cell,
+                        entries,
+                        make_array_view(&values.strains[0],
+                                        &values.strains[0] + n_q));
+    values.damage.fill(1.);
+    if (with_damage)
+      {
+        kinematics->damage_gradients(
+          cell,
+          entries,
+          make_array_view(&values.gradients[0], &values.gradients[0] + n_q));
+        kinematics->damage(cell,
+                           entries,
+                           make_array_view(&values.damage[0],
+                                           &values.damage[0] + n_q));
+      }
+  }
+
+
+
+  template <int dim>
+  void
   ErrorEstimator<dim>::cell_moments(const std::size_t i,
                                     const double     *entries,
                                     double           *moments) const
@@ -161,16 +196,10 @@ namespace VPContact
     const auto         JxW     = history->JxW(cell);
     const unsigned int n_q     = JxW.size();
     const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
-    std::array<SymmetricTensor<2, dim>, 8> strains;
-    std::array<Tensor<1, dim>, 8>          gradients;
-    kinematics->strains(cell,
-                        entries,
-                        make_array_view(&strains[0], &strains[0] + n_q));
-    if (with_damage)
-      kinematics->damage_gradients(cell,
-                                   entries,
-                                   make_array_view(&gradients[0],
-                                                   &gradients[0] + n_q));
+    PointValues        values;
+    evaluate_points(i, entries, values);
+    const auto &strains   = values.strains;
+    const auto &gradients = values.gradients;
     std::fill(moments, moments + recovered.n_blocks() * n_nodes, 0.);
     for (unsigned int q = 0; q < n_q; ++q)
       for (unsigned int a = 0; a < n_nodes; ++a)
@@ -295,28 +324,16 @@ namespace VPContact
     // The squared distances between the recovered and the discrete fields
     // on cell i, and the squared norm of G_n - G_0 (at n = 0, G_0 is
     // stored instead).
-    const auto                            &cell   = (*cells)[i];
-    const auto                             points = history->get_data(cell);
-    const auto                             JxW    = history->JxW(cell);
-    const unsigned int                     n_q    = JxW.size();
-    std::array<SymmetricTensor<2, dim>, 8> strains;
-    std::array<Tensor<1, dim>, 8>          gradients;
-    std::array<double, 8>                  damage;
-    damage.fill(1.);
-    kinematics->strains(cell,
-                        entries,
-                        make_array_view(&strains[0], &strains[0] + n_q));
-    if (with_damage)
-      {
-        kinematics->damage_gradients(cell,
-                                     entries,
-                                     make_array_view(&gradients[0],
-                                                     &gradients[0] + n_q));
-        kinematics->damage(cell,
-                           entries,
-                           make_array_view(&damage[0], &damage[0] + n_q));
-      }
-    CellNorms norms;
+    const auto        &cell   = (*cells)[i];
+    const auto         points = history->get_data(cell);
+    const auto         JxW    = history->JxW(cell);
+    const unsigned int n_q    = JxW.size();
+    PointValues        values;
+    evaluate_points(i, entries, values);
+    const auto &strains   = values.strains;
+    const auto &gradients = values.gradients;
+    const auto &damage    = values.damage;
+    CellNorms   norms;
     for (unsigned int q = 0; q < n_q; ++q)
       {
         SymmetricTensor<2, dim> stress_star, strain_star;

@@ -17,6 +17,7 @@
 #include <deal.II/lac/la_parallel_block_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -131,6 +132,19 @@ namespace VPContact
     {
       double stress = 0, strain = 0, damage = 0, time = 0;
     };
+    /// The solution at the points of one cell (at most 8: the 2^dim Gauss
+    /// points of Q1).
+    struct PointValues
+    {
+      static constexpr unsigned int                   max_points = 8;
+      std::array<SymmetricTensor<2, dim>, max_points> strains;
+      std::array<Tensor<1, dim>, max_points>          gradients;
+      std::array<double, max_points>                  damage;
+    };
+    void
+    evaluate_points(const std::size_t i,
+                    const double     *entries,
+                    PointValues      &values) const;
     void
     setup_nodes_and_mass();
     void
