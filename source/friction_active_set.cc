@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <cmath>
 
@@ -95,42 +96,72 @@ namespace VPContact
             for (const unsigned int v : face->vertex_indices())
               {
                 Node node;
-                for (unsigned int d = 0; d < dim; ++d)
-                  node.dofs[d] = face->vertex_dof_index(v, d);
-                if (!seen.insert(node.dofs[0]).second)
+                if (!seen.insert(face->vertex_dof_index(v, 0)).second
+                    || !make_node(face, v, base_constraints, node))
                   continue;
-
-                // Exactly one free component: the normal one is constrained
-                // by the bilateral condition; none free means a Dirichlet
-                // part holds the node (the clamp wins).
-                unsigned int n_free = 0, free_component = 0;
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (!base_constraints.is_constrained(node.dofs[d]))
-                    {
-                      ++n_free;
-                      free_component = d;
-                    }
-                if (n_free != 1)
-                  continue;
-                node.free_dof = node.dofs[free_component];
-
-                // The constrained component a follows u_a = c u_f; moving
-                // u_f by 1 moves the node by e_f + c e_a: the tangent.
-                node.tangent[free_component] = 1.;
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (d != free_component)
-                    if (const auto *entries
-                        = base_constraints.get_constraint_entries(node.dofs[d]))
-                      for (const auto &[dof, coefficient] : *entries)
-                        if (dof == node.free_dof)
-                          node.tangent[d] = coefficient;
-                node.tangent /= node.tangent.norm();
-
-                node.position = face->vertex(v);
-                node.owned    = owned_dofs.is_element(node.free_dof);
-                node.length   = relevant_lengths(node.dofs[0]);
+                node.owned  = owned_dofs.is_element(node.free_dofs[0]);
+                node.length = relevant_lengths(node.dofs[0]);
                 nodes.push_back(node);
               }
+  }
+
+
+
+  template <int dim>
+  bool
+  FrictionActiveSet<dim>::make_node(
+    const typename DoFHandler<dim>::face_iterator &face,
+    const unsigned int                             v,
+    const AffineConstraints<double>               &base_constraints,
+    Node                                          &node) const
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      node.dofs[d] = face->vertex_dof_index(v, d);
+    node.position = face->vertex(v);
+
+    // At least one free component and at least one held by the bilateral
+    // condition; none free means a Dirichlet part holds the node (the clamp
+    // wins).
+    std::vector<unsigned int> free_components;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (!base_constraints.is_constrained(node.dofs[d]))
+        {
+          free_components.push_back(d);
+          node.free_dofs.push_back(node.dofs[d]);
+        }
+    if (free_components.empty() || free_components.size() == dim)
+      return false;
+
+    // The constrained components a follow u_a = sum_f c_af u_f; moving u_f
+    // by 1 moves the node by e_f + sum_a c_af e_a. Gram-Schmidt turns these
+    // motions into an orthonormal basis of the tangent space.
+    for (const unsigned int f : free_components)
+      {
+        Tensor<1, dim> t;
+        t[f] = 1.;
+        for (unsigned int a = 0; a < dim; ++a)
+          if (const auto *entries
+              = base_constraints.get_constraint_entries(node.dofs[a]))
+            for (const auto &[dof, coefficient] : *entries)
+              if (dof == node.dofs[f])
+                t[a] = coefficient;
+        for (const auto &earlier : node.tangents)
+          t -= (t * earlier) * earlier;
+        node.tangents.push_back(t / t.norm());
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  FrictionActiveSet<dim>::Node::tangential(const Tensor<1, dim> &v) const
+  {
+    Tensor<1, dim> p;
+    for (const auto &t : tangents)
+      p += (v * t) * t;
+    return p;
   }
 
 
@@ -152,9 +183,10 @@ namespace VPContact
     AffineConstraints<double> &constraints) const
   {
     for (const auto &node : nodes)
-      if (node.status == ContactStatus::stick
-          && !constraints.is_constrained(node.free_dof))
-        constraints.add_line(node.free_dof);
+      if (node.status == ContactStatus::stick)
+        for (const auto dof : node.free_dofs)
+          if (!constraints.is_constrained(dof))
+            constraints.add_line(dof);
   }
 
 
@@ -165,8 +197,9 @@ namespace VPContact
     const AffineConstraints<double> &constraints,
     TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    // At a slip node the residual must be lambda_i m_i t_i with
-    // lambda_i = g_i s_i, i.e. the system gets the force -m_i g_i s_i t_i.
+    // At a slip node the residual must be m_i lambda_i with
+    // lambda_i = g_i n_i (plus the slip stiffness term, which the matrix
+    // carries), i.e. the system gets the force -m_i g_i n_i.
     Vector<double>                       force(dim);
     std::vector<types::global_dof_index> dofs(dim);
     for (const auto &node : nodes)
@@ -174,9 +207,8 @@ namespace VPContact
         {
           for (unsigned int d = 0; d < dim; ++d)
             {
-              force(d)
-                = -node.length * node.g * node.direction * node.tangent[d];
-              dofs[d] = node.dofs[d];
+              force(d) = -node.length * node.g * node.direction[d];
+              dofs[d]  = node.dofs[d];
             }
           constraints.distribute_local_to_global(force, dofs, rhs);
         }
@@ -186,42 +218,84 @@ namespace VPContact
 
 
   template <int dim>
+  void
+  FrictionActiveSet<dim>::add_slip_stiffness(
+    const AffineConstraints<double> &constraints,
+    TrilinosWrappers::SparseMatrix  &matrix) const
+  {
+    // m_i beta_i (P_i - n_i n_i^T) in the node's displacement components;
+    // the constraints carry it over to the free ones. On a tangent line
+    // P_i = n_i n_i^T and there is nothing to add.
+    FullMatrix<double>                   stiffness(dim, dim);
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &node : nodes)
+      if (node.owned && node.status == ContactStatus::slip
+          && node.tangents.size() > 1)
+        {
+          dofs.assign(node.dofs.begin(), node.dofs.end());
+          stiffness = 0.;
+          for (const auto &t : node.tangents)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                stiffness(i, j) += t[i] * t[j];
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              stiffness(i, j)
+                = node.length * node.slip_stiffness
+                  * (stiffness(i, j) - node.direction[i] * node.direction[j]);
+          constraints.distribute_local_to_global(stiffness, dofs, matrix);
+        }
+  }
+
+
+
+  template <int dim>
   typename FrictionActiveSet<dim>::Changes
   FrictionActiveSet<dim>::update(const TrilinosWrappers::MPI::Vector &residual,
                                  const TrilinosWrappers::MPI::Vector &increment,
                                  const double youngs_modulus,
-                                 const double c_factor)
+                                 const double c_factor,
+                                 const double direction_tolerance)
   {
     Changes changes;
     for (auto &node : nodes)
       {
-        double r_t = 0, w_t = 0;
+        Tensor<1, dim> r, du;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            r_t += node.tangent[d] * residual(node.dofs[d]);
-            w_t += node.tangent[d] * increment(node.dofs[d]);
+            r[d]  = residual(node.dofs[d]);
+            du[d] = increment(node.dofs[d]);
           }
-        node.lambda = r_t / node.length;
-        node.slip   = w_t;
+        node.lambda = node.tangential(r) / node.length;
+        node.slip   = node.tangential(du);
 
         // c of the order of E/h, so that lambda and c w compare alike.
         const double c    = c_factor * youngs_modulus / node.length;
         const auto   next = tresca_decision(node.lambda, node.slip, node.g, c);
         const bool   stick_changed = (next.status != node.status);
-        const bool   changed       = stick_changed
-                             || (next.status == ContactStatus::slip
-                                 && next.direction != node.direction);
+        const bool   turned        = next.status == ContactStatus::slip
+                            && (stick_changed
+                                || (next.direction - node.direction).norm()
+                                     > direction_tolerance);
         if (node.owned)
           {
-            changes.n_changed += changed;
+            changes.n_changed += stick_changed || turned;
             changes.n_stick_changed += stick_changed;
+            changes.n_matrix_changed
+              += stick_changed || (turned && node.tangents.size() > 1);
           }
-        node.status    = next.status;
-        node.direction = next.direction;
+        node.status = next.status;
+        if (stick_changed || turned)
+          {
+            node.direction      = next.direction;
+            node.slip_stiffness = next.slip_stiffness;
+          }
       }
     changes.n_changed = Utilities::MPI::sum(changes.n_changed, communicator);
     changes.n_stick_changed
       = Utilities::MPI::sum(changes.n_stick_changed, communicator);
+    changes.n_matrix_changed
+      = Utilities::MPI::sum(changes.n_matrix_changed, communicator);
     return changes;
   }
 
@@ -248,7 +322,7 @@ namespace VPContact
     double utilisation = 0;
     for (const auto &node : nodes)
       if (node.owned && node.g > 0)
-        utilisation = std::max(utilisation, std::abs(node.lambda) / node.g);
+        utilisation = std::max(utilisation, node.lambda.norm() / node.g);
     return Utilities::MPI::max(utilisation, communicator);
   }
 
@@ -263,19 +337,18 @@ namespace VPContact
       if (node.owned)
         {
           g_scale = std::max(g_scale, node.g);
-          w_scale = std::max(w_scale, std::abs(node.slip));
+          w_scale = std::max(w_scale, node.slip.norm());
         }
     g_scale = Utilities::MPI::max(g_scale, communicator);
     w_scale = Utilities::MPI::max(w_scale, communicator);
     for (const auto &node : nodes)
       if (node.owned)
         {
-          violation = std::max(violation, std::abs(node.lambda) - node.g);
-          if (std::abs(node.slip) > slip_tolerance * w_scale)
-            violation
-              = std::max(violation,
-                         std::abs(node.lambda
-                                  - node.g * (node.slip > 0 ? 1. : -1.)));
+          violation      = std::max(violation, node.lambda.norm() - node.g);
+          const double w = node.slip.norm();
+          if (w > slip_tolerance * w_scale)
+            violation = std::max(violation,
+                                 (node.lambda - node.g / w * node.slip).norm());
         }
     violation = Utilities::MPI::max(violation, communicator);
     return g_scale > 0 ? violation / g_scale : violation;
@@ -286,15 +359,22 @@ namespace VPContact
   template <int dim>
   void
   FrictionActiveSet<dim>::fill_output(
-    TrilinosWrappers::MPI::Vector &output) const
+    TrilinosWrappers::MPI::Vector &status,
+    TrilinosWrappers::MPI::Vector &traction) const
   {
     for (const auto &node : nodes)
       if (node.owned)
         {
-          output(node.dofs[0]) = static_cast<double>(node.status);
-          output(node.dofs[1]) = -node.lambda;
+          status(node.dofs[0]) = static_cast<double>(node.status);
+          // In 2D the scalar along the tangent, in 3D the vector.
+          if (dim == 2)
+            traction(node.dofs[0]) = -node.lambda * node.tangents[0];
+          else
+            for (unsigned int d = 0; d < dim; ++d)
+              traction(node.dofs[d]) = -node.lambda[d];
         }
-    output.compress(VectorOperation::insert);
+    status.compress(VectorOperation::insert);
+    traction.compress(VectorOperation::insert);
   }
 
 
@@ -319,7 +399,8 @@ namespace VPContact
       if (node.owned)
         {
           state(node.dofs[0]) = static_cast<double>(node.status);
-          state(node.dofs[1]) = node.direction;
+          for (unsigned int k = 0; k < node.tangents.size(); ++k)
+            state(node.dofs[k + 1]) = node.direction * node.tangents[k];
         }
     state.compress(VectorOperation::insert);
   }
@@ -332,11 +413,13 @@ namespace VPContact
   {
     for (auto &node : nodes)
       {
-        const double status    = state(node.dofs[0]);
-        const double direction = state(node.dofs[1]);
-        AssertThrow((status == 1. || status == 2.)
-                      && (direction == -1. || direction == 0.
-                          || direction == 1.),
+        const double   status = state(node.dofs[0]);
+        Tensor<1, dim> direction;
+        for (unsigned int k = 0; k < node.tangents.size(); ++k)
+          direction += state(node.dofs[k + 1]) * node.tangents[k];
+        const double size = direction.norm();
+        AssertThrow((status == 1. && size == 0.)
+                      || (status == 2. && std::abs(size - 1.) < 1e-8),
                     ExcMessage("The checkpoint holds no valid stick/slip "
                                "state at the contact node at "
                                + std::to_string(node.position[0]) + ", "
@@ -345,6 +428,7 @@ namespace VPContact
                                  "boundary."));
         node.status    = static_cast<ContactStatus>(static_cast<int>(status));
         node.direction = direction;
+        node.slip_stiffness = 0;
       }
   }
 

@@ -100,6 +100,17 @@ namespace VPContact
 
 
   template <int dim>
+  void
+  FrictionProblem<dim>::add_slip_stiffness(
+    const AffineConstraints<double> &constraints,
+    TrilinosWrappers::SparseMatrix  &matrix) const
+  {
+    active_set.add_slip_stiffness(constraints, matrix);
+  }
+
+
+
+  template <int dim>
   typename FrictionActiveSet<dim>::Changes
   FrictionProblem<dim>::update(const TrilinosWrappers::MPI::Vector &increment,
                                const double             youngs_modulus,
@@ -113,7 +124,8 @@ namespace VPContact
     return active_set.update(residual,
                              increment,
                              youngs_modulus,
-                             friction.complementarity_factor());
+                             friction.complementarity_factor(),
+                             friction.direction_tolerance());
   }
 
 
@@ -162,9 +174,11 @@ namespace VPContact
 
   template <int dim>
   void
-  FrictionProblem<dim>::fill_output(TrilinosWrappers::MPI::Vector &output) const
+  FrictionProblem<dim>::fill_output(
+    TrilinosWrappers::MPI::Vector &status,
+    TrilinosWrappers::MPI::Vector &traction) const
   {
-    active_set.fill_output(output);
+    active_set.fill_output(status, traction);
   }
 
 

@@ -472,8 +472,9 @@ namespace VPContact
                                         const unsigned int iteration)
   {
     // The next stick and slip sets from the multipliers of this solve.
-    // The matrix changes only when a node enters or leaves the stick set;
-    // then it is reassembled with the new constraints.
+    // The matrix changes when a node enters or leaves the stick set (its
+    // constraints change) or, in 3D, when a slip direction turns (its slip
+    // stiffness changes); then it is reassembled.
     const auto changes
       = friction_problem->update(increment,
                                  material.youngs_modulus(),
@@ -488,15 +489,16 @@ namespace VPContact
         "The stick/slip active set did not converge at t = " + to_text(time)
         + ": after " + std::to_string(iteration) + " iterations "
         + std::to_string(changes.n_changed)
-        + " contact node(s) still change set. Raise Contact/Maximum active "
+        + " contact node(s) still change set or slip direction. Raise Contact/Maximum active "
           "set iterations = "
         + std::to_string(friction.max_iterations())
         + ", or try another Contact/Complementarity factor. The output up "
           "to the previous step is complete in "
         + output_writer.directory() + "."));
     if (changes.n_stick_changed > 0)
+      make_constraints(time, &solution);
+    if (changes.n_matrix_changed > 0)
       {
-        make_constraints(time, &solution);
         assemble_stiffness_matrix();
         initialize_linear_solver();
       }

@@ -53,8 +53,8 @@ namespace VPContact
 
     // K_ij = (E eps(phi_j), eps(phi_i)): the paper's matrix k E divided by
     // k, since the unknown is the increment k w. It does not change while
-    // the mesh is fixed, and neither does the structure of the constraints,
-    // so it is assembled once.
+    // the mesh is fixed, except where friction changes it: the stick nodes'
+    // constraints and, in 3D, the slip nodes' stiffness.
     FEValues<dim>                        fe_values(fe,
                             quadrature,
                             update_gradients | update_JxW_values);
@@ -74,6 +74,8 @@ namespace VPContact
                                                dof_indices,
                                                displacement.matrix);
       }
+    if (friction_problem)
+      friction_problem->add_slip_stiffness(constraints, displacement.matrix);
     displacement.matrix.compress(VectorOperation::add);
   }
 

@@ -33,10 +33,32 @@ namespace VPContact
               "stress_yz"};
     }
 
-    // The first two components of the contact vector as the scalar fields
-    // contact_status and tangential_traction (the others are unused).
+    // The x component of the contact status vector as the scalar field
+    // contact_status (the others are unused).
     template <int dim>
-    class ContactFields : public DataPostprocessor<dim>
+    class ContactStatusField : public DataPostprocessorScalar<dim>
+    {
+    public:
+      ContactStatusField()
+        : DataPostprocessorScalar<dim>("contact_status", update_values)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>>                &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          computed[q](0) = inputs.solution_values[q](0);
+      }
+    };
+
+    // The tangential traction of the contact nodes in the displacement
+    // components of a vector (FrictionActiveSet::fill_output()): in 2D the
+    // scalar sigma_tau along the node's tangent, in the x component; in 3D
+    // the vector sigma_tau.
+    template <int dim>
+    class TractionField : public DataPostprocessor<dim>
     {
     public:
       void
@@ -45,14 +67,25 @@ namespace VPContact
         std::vector<Vector<double>>                &computed) const override
       {
         for (unsigned int q = 0; q < computed.size(); ++q)
-          for (unsigned int c = 0; c < 2; ++c)
+          for (unsigned int c = 0; c < computed[q].size(); ++c)
             computed[q](c) = inputs.solution_values[q](c);
       }
 
       std::vector<std::string>
       get_names() const override
       {
-        return {"contact_status", "tangential_traction"};
+        return std::vector<std::string>(dim == 2 ? 1 : dim,
+                                        "tangential_traction");
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        return std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>(
+          dim == 2 ? 1 : dim,
+          dim == 2 ? DataComponentInterpretation::component_is_scalar :
+                     DataComponentInterpretation::component_is_part_of_vector);
       }
 
       UpdateFlags
@@ -398,15 +431,20 @@ namespace VPContact
     // Contact nodes: status (0 none, 1 stick, 2 slip) and tangential
     // traction sigma_tau, carried by the first two components of a nodal
     // vector.
-    TrilinosWrappers::MPI::BlockVector contact_blocks;
-    const ContactFields<dim>           contact_fields;
+    TrilinosWrappers::MPI::BlockVector status_blocks, traction_blocks;
+    const ContactStatusField<dim>      status_field;
+    const TractionField<dim>           traction_field;
     if (friction_problem)
       {
-        TrilinosWrappers::MPI::Vector contact(solution_owned);
-        contact = 0.;
-        friction_problem->fill_output(contact);
-        contact_blocks = blocks(contact);
-        data_out.add_data_vector(contact_blocks, contact_fields);
+        TrilinosWrappers::MPI::Vector status(solution_owned);
+        TrilinosWrappers::MPI::Vector traction(solution_owned);
+        status   = 0.;
+        traction = 0.;
+        friction_problem->fill_output(status, traction);
+        status_blocks   = blocks(status);
+        traction_blocks = blocks(traction);
+        data_out.add_data_vector(status_blocks, status_field);
+        data_out.add_data_vector(traction_blocks, traction_field);
       }
 
     data_out.add_data_vector(von_mises, "von_mises");
@@ -453,8 +491,8 @@ namespace VPContact
       pcout << "Tresca conditions at every contact node and step: largest "
                "violation "
             << format("%.1e", friction_problem->max_violation())
-            << " of max g (holds to 1e-6: "
-            << (friction_problem->max_violation() < 1e-6 ? "yes" : "NO")
+            << " of max g (holds to 1e-8: "
+            << (friction_problem->max_violation() < 1e-8 ? "yes" : "NO")
             << ")\n";
     pcout << "Run complete: " << time_discretization.n_steps()
           << " steps; statistics in "

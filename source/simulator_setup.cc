@@ -47,16 +47,6 @@ namespace VPContact
                       + "). Use the explicit step with a Time step within its "
                         "stability limit, or a frictionless contact "
                         "(Contact/Friction bound = 0)."));
-        AssertThrow(dim == 2 || !friction_problem,
-                    ExcMessage(
-                      "Contact/Friction bound: Tresca friction is implemented "
-                      "in 2D only (in 3D the slip direction needs the "
-                      "semismooth Newton method of Hueber, Stadler and "
-                      "Wohlmuth, not written yet). This 3D scene has a "
-                      "friction bound up to "
-                      + to_text(g_max)
-                      + " on its contact boundary: set it to 0 "
-                        "(frictionless bilateral contact) or run in 2D."));
       }
   }
 

@@ -11,16 +11,18 @@
 
 namespace VPContact
 {
-  TrescaDecision
-  tresca_decision(const double lambda,
-                  const double slip,
-                  const double g,
-                  const double c)
+  template <int dim>
+  TrescaDecision<dim>
+  tresca_decision(const Tensor<1, dim> &lambda,
+                  const Tensor<1, dim> &slip,
+                  const double          g,
+                  const double          c)
   {
-    const double v = lambda + c * slip;
-    if (std::abs(v) <= g)
-      return {ContactStatus::stick, 0.};
-    return {ContactStatus::slip, v > 0 ? 1. : -1.};
+    const Tensor<1, dim> z    = lambda + c * slip;
+    const double         size = z.norm();
+    if (size <= g)
+      return {ContactStatus::stick, Tensor<1, dim>(), 0.};
+    return {ContactStatus::slip, z / size, g * c / (size - g)};
   }
 
 
@@ -52,6 +54,17 @@ namespace VPContact
                         "(its boundary length), of the order of E/h. Any "
                         "positive value gives the same solution; it can "
                         "change the number of iterations. Must be positive.");
+      prm.declare_entry("Slip direction tolerance",
+                        "1e-10",
+                        Patterns::Double(0),
+                        "In 3D, the stick/slip iteration has converged when "
+                        "no node changes set and no slip direction (a unit "
+                        "vector in the tangent plane) turns by more than "
+                        "this; the friction law then holds to about this "
+                        "fraction of g. Raise it if an iterative "
+                        "displacement solver's tolerance keeps the "
+                        "directions from settling. (In 2D a direction only "
+                        "flips.)");
     }
     prm.leave_subsection();
   }
@@ -67,6 +80,7 @@ namespace VPContact
       = parse_function_entry<dim>(prm, "Contact", "Friction bound", 1);
     iteration_cap = prm.get_integer("Maximum active set iterations");
     c_factor      = prm.get_double("Complementarity factor");
+    direction_tol = prm.get_double("Slip direction tolerance");
     prm.leave_subsection();
     VPContactCheckParameter(c_factor > 0,
                             "Contact/Complementarity factor",
@@ -168,6 +182,30 @@ namespace VPContact
 
 
 
+  template <int dim>
+  double
+  TrescaFriction<dim>::direction_tolerance() const
+  {
+    return direction_tol;
+  }
+
+
+
   template class TrescaFriction<2>;
   template class TrescaFriction<3>;
+  template TrescaDecision<1>
+  tresca_decision(const Tensor<1, 1> &,
+                  const Tensor<1, 1> &,
+                  const double,
+                  const double);
+  template TrescaDecision<2>
+  tresca_decision(const Tensor<1, 2> &,
+                  const Tensor<1, 2> &,
+                  const double,
+                  const double);
+  template TrescaDecision<3>
+  tresca_decision(const Tensor<1, 3> &,
+                  const Tensor<1, 3> &,
+                  const double,
+                  const double);
 } // namespace VPContact

@@ -11,6 +11,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
@@ -23,17 +24,29 @@ namespace VPContact
 
   /**
    * The primal-dual active set of the contact nodes (as step-41/42's
-   * active set, for Tresca friction in 2D).
+   * active set), for Tresca friction on contact lines (2D) and surfaces
+   * (3D).
    *
    * A contact node is a vertex of Gamma_C whose normal displacement is
-   * constrained by the bilateral condition and whose tangential
-   * displacement is free (a vertex also on a Dirichlet part is not a contact
-   * node: the clamp wins). Its tangent t_i is read off the normal constraint
-   * u_a = c u_f, so that the free degree of freedom u_f moves the node along
-   * t_i. Friction is evaluated with nodal quadrature: m_i is the lumped
-   * length of Gamma_C at the node, lambda_i = t_i . r_i / m_i the friction
-   * multiplier from the residual r = b - A(du) (lambda = -sigma_tau) and
-   * w_i = t_i . du_i the tangential increment (k times the slip velocity).
+   * constrained by the bilateral condition and which has at least one free
+   * displacement component (a vertex also on a Dirichlet part is not a
+   * contact node: the clamp wins). Its tangent space is read off the
+   * constraints: moving a free degree of freedom u_f by 1 moves the node by
+   * e_f + sum_a c_af e_a, where u_a = sum_f c_af u_f are its constrained
+   * components. The space is a line in 2D, a plane on a 3D surface, and a
+   * line again on an edge where the contact surface meets a roller;
+   * P_i is the projection onto it. Friction is evaluated with nodal
+   * quadrature: m_i is the lumped measure of Gamma_C at the node,
+   * lambda_i = P_i r_i / m_i the friction multiplier from the residual
+   * r = b - A(du) (lambda = -sigma_tau) and w_i = P_i du_i the tangential
+   * increment (k times the slip velocity).
+   *
+   * A stick node holds its free components (w_i = 0). A slip node carries
+   * the linearised slip law of tresca_decision(): the force
+   * -m_i g_i n_i and the stiffness m_i beta_i (P_i - n_i n_i^T), which is
+   * zero on a line. Each iteration is a semismooth Newton step for the
+   * ball |lambda_i| <= g_i; it has converged when no node changes set and
+   * no slip direction moves by more than the direction tolerance.
    *
    * Decisions are taken for every locally relevant node from ghosted
    * vectors, so that a node on a processor boundary is decided alike on
@@ -47,8 +60,12 @@ namespace VPContact
     {
       /// Nodes that changed set or slip direction (all ranks).
       unsigned int n_changed = 0;
-      /// Nodes that entered or left the stick set (the matrix changes).
+      /// Nodes that entered or left the stick set (the constraints change).
       unsigned int n_stick_changed = 0;
+      /// Nodes whose slip stiffness changed (the matrix changes): the stick
+      /// changes, and the direction changes where the tangent space is a
+      /// plane.
+      unsigned int n_matrix_changed = 0;
     };
 
     /**
@@ -70,21 +87,30 @@ namespace VPContact
     void
     add_stick_constraints(AffineConstraints<double> &constraints) const;
 
-    /// Add the friction force -m_i g_i s_i t_i of every owned slip node.
+    /// Add the friction force -m_i g_i n_i of every owned slip node.
     void
     add_slip_forces(const AffineConstraints<double> &constraints,
                     TrilinosWrappers::MPI::Vector   &rhs) const;
 
+    /// Add the slip stiffness m_i beta_i (P_i - n_i n_i^T) of every owned
+    /// slip node whose tangent space is a plane (before compress()).
+    void
+    add_slip_stiffness(const AffineConstraints<double> &constraints,
+                       TrilinosWrappers::SparseMatrix  &matrix) const;
+
     /**
      * Recompute lambda and w from the ghosted @p residual and @p increment
      * and take the next sets with tresca_decision(), using
-     * c = @p c_factor * @p youngs_modulus / m_i.
+     * c = @p c_factor * @p youngs_modulus / m_i. A slip node keeps its
+     * direction and slip stiffness while its direction moves by at most
+     * @p direction_tolerance.
      */
     Changes
     update(const TrilinosWrappers::MPI::Vector &residual,
            const TrilinosWrappers::MPI::Vector &increment,
            const double                         youngs_modulus,
-           const double                         c_factor);
+           const double                         c_factor,
+           const double                         direction_tolerance);
 
     /// Global numbers of stick and slip nodes.
     std::pair<unsigned int, unsigned int>
@@ -96,20 +122,23 @@ namespace VPContact
 
     /**
      * The largest violation of the discrete Tresca conditions, relative to
-     * g: max over nodes of (|lambda_i| - g_i)^+ and, where |w_i| > 0, of
-     * |lambda_i - g_i sign(w_i)|. Zero up to the solver tolerance when the
-     * iteration has converged.
+     * g: max over nodes of (|lambda_i| - g_i)^+ and, where |w_i| exceeds
+     * @p slip_tolerance times the largest |w|, of |lambda_i - g_i w_i/|w_i||.
+     * Zero up to the solver tolerance when the iteration has converged.
      */
     double
     max_violation(const double slip_tolerance) const;
 
     /**
-     * Write the status (0 none, 1 stick, 2 slip) into the x component and
-     * the tangential traction sigma_tau = -lambda into the y component of
-     * the owned contact nodes of @p output (a vector on all dofs).
+     * Write the status (0 none, 1 stick, 2 slip) into the x component of
+     * the owned contact nodes of @p status and the tangential traction
+     * sigma_tau = -lambda into their displacement components of
+     * @p traction (vectors on all dofs); in 2D its component along the
+     * node's tangent into the x component.
      */
     void
-    fill_output(TrilinosWrappers::MPI::Vector &output) const;
+    fill_output(TrilinosWrappers::MPI::Vector &status,
+                TrilinosWrappers::MPI::Vector &traction) const;
 
     bool
     empty() const;
@@ -122,9 +151,11 @@ namespace VPContact
     /**
      * For checkpoints: write the set of every owned contact node into
      * @p state (a vector on all dofs): its status (1 stick, 2 slip) into
-     * the x component and its slip direction (-1, 0, 1) into the y
-     * component. Stored as a finite element vector, the sets travel with
-     * the mesh to any number of ranks.
+     * the x component and the coordinates of its slip direction in its
+     * tangent basis into the next ones (in 2D -1, 0 or 1). Stored as a
+     * finite element vector, the sets travel with the mesh to any number of
+     * ranks. A resumed slip node's first iteration has no slip stiffness:
+     * its direction is a fixed point until it next changes.
      */
     void
     write_state(TrilinosWrappers::MPI::Vector &state) const;
@@ -138,17 +169,30 @@ namespace VPContact
     struct Node
     {
       std::array<types::global_dof_index, dim> dofs;
-      types::global_dof_index                  free_dof;
-      Tensor<1, dim>                           tangent;
-      Point<dim>                               position;
-      bool                                     owned     = false;
-      double                                   length    = 0;
-      double                                   g         = 0;
-      double                                   lambda    = 0;
-      double                                   slip      = 0;
-      ContactStatus                            status    = ContactStatus::stick;
-      double                                   direction = 0;
+      std::vector<types::global_dof_index>     free_dofs;
+      /// An orthonormal basis of the tangent space.
+      std::vector<Tensor<1, dim>> tangents;
+      Point<dim>                  position;
+      bool                        owned  = false;
+      double                      length = 0;
+      double                      g      = 0;
+      Tensor<1, dim>              lambda;
+      Tensor<1, dim>              slip;
+      ContactStatus               status = ContactStatus::stick;
+      Tensor<1, dim>              direction;
+      double                      slip_stiffness = 0;
+
+      /// P v: the tangential part of @p v.
+      Tensor<1, dim>
+      tangential(const Tensor<1, dim> &v) const;
     };
+
+    /// The node of the vertex @p v of @p face, if it is a contact node.
+    bool
+    make_node(const typename DoFHandler<dim>::face_iterator &face,
+              const unsigned int                             v,
+              const AffineConstraints<double>               &base_constraints,
+              Node                                          &node) const;
 
     std::vector<Node> nodes;
     MPI_Comm          communicator = MPI_COMM_WORLD;

@@ -68,10 +68,15 @@ namespace VPContact
     void
     begin_step(const double time);
 
-    /// The slip nodes' forces -g s into @p rhs.
+    /// The slip nodes' forces -m g n into @p rhs.
     void
     add_slip_forces(const AffineConstraints<double> &constraints,
                     TrilinosWrappers::MPI::Vector   &rhs) const;
+
+    /// The slip nodes' stiffness (3D) into @p matrix, before compress().
+    void
+    add_slip_stiffness(const AffineConstraints<double> &constraints,
+                       TrilinosWrappers::SparseMatrix  &matrix) const;
 
     /**
      * One active-set iteration after a solve: the residual by
@@ -97,7 +102,8 @@ namespace VPContact
 
     /// Status and tangential traction of the contact nodes, for output.
     void
-    fill_output(TrilinosWrappers::MPI::Vector &output) const;
+    fill_output(TrilinosWrappers::MPI::Vector &status,
+                TrilinosWrappers::MPI::Vector &traction) const;
 
     /// The sets into @p state and the counters a resumed run needs.
     void

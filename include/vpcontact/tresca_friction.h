@@ -7,6 +7,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 #include <deal.II/distributed/tria.h>
 
@@ -26,28 +27,41 @@ namespace VPContact
     slip  = 2
   };
 
-  /// A node's next state: stick, or slip with the direction of lambda.
+  /**
+   * A node's next state: stick, or slip in the unit direction n of
+   * lambda + c w in the tangent plane, with the slip stiffness beta of the
+   * linearised slip law lambda = g n + beta (I - n n^T) w.
+   */
+  template <int dim>
   struct TrescaDecision
   {
-    ContactStatus status;
-    double        direction; // +1 or -1 for slip, 0 for stick
+    ContactStatus  status;
+    Tensor<1, dim> direction;          // n for slip, 0 for stick
+    double         slip_stiffness = 0; // beta for slip, 0 for stick
   };
 
   /**
    * The primal-dual active set (semismooth Newton) decision for one contact
-   * node of a 2D Tresca problem. With lambda the nodal friction multiplier
-   * (lambda = -sigma_tau, the residual per unit boundary length), w the
-   * tangential slip and c > 0, the discrete conditions |lambda| <= g and
-   * lambda w = g |w| are equivalent to
+   * node of Tresca's law in the tangent plane (Hueber, Stadler and
+   * Wohlmuth). With lambda the nodal friction multiplier (lambda =
+   * -sigma_tau, the residual per unit boundary measure), w the tangential
+   * slip and c > 0, the discrete conditions |lambda| <= g and
+   * lambda . w = g |w| are equivalent to
    *   max(g, |lambda + c w|) lambda = g (lambda + c w).
-   * The node sticks (w = 0) where |lambda + c w| <= g, and slips with
-   * lambda = g sign(lambda + c w) elsewhere.
+   * The node sticks (w = 0) where |lambda + c w| <= g, and slips
+   * elsewhere. A slip node's law lambda = g w / |w| is nonlinear in w; its
+   * Newton linearisation about z = lambda + c w, n = z / |z|, with lambda
+   * taken parallel to n, is lambda = g n + beta (I - n n^T) w with
+   * beta = g c / (|z| - g) > 0: the node resists slip across n, not along
+   * it. In 2D the tangent plane is a line, I - n n^T vanishes on it and
+   * the decision is the sign switch lambda = g sign(lambda + c w).
    */
-  TrescaDecision
-  tresca_decision(const double lambda,
-                  const double slip,
-                  const double g,
-                  const double c);
+  template <int dim>
+  TrescaDecision<dim>
+  tresca_decision(const Tensor<1, dim> &lambda,
+                  const Tensor<1, dim> &slip,
+                  const double          g,
+                  const double          c);
 
   /**
    * Section "Contact": the friction bound g(x, t) >= 0 on Gamma_C and the
@@ -84,10 +98,15 @@ namespace VPContact
     double
     complementarity_factor() const;
 
+    /// How far a slip direction may turn in a converged iteration.
+    double
+    direction_tolerance() const;
+
   private:
     std::unique_ptr<FunctionParser<dim>> friction_bound;
     unsigned int                         iteration_cap = 50;
     double                               c_factor      = 1.;
+    double                               direction_tol = 1e-10;
   };
 } // namespace VPContact
 

@@ -1,5 +1,7 @@
-// Checks the two limits of Tresca friction on the paper scene (8 x 8 cells,
-// 4 steps, no damage so the body is elastic):
+// Checks the two limits of Tresca friction on the paper scene, in 2D
+// (8 x 8 cells) and on the cube in 3D (4 x 4 x 4 cells, where the friction
+// law is the ball |sigma_tau| <= g), 4 steps, no damage so the body is
+// elastic:
 // - g -> 0: with g = 1e-9 every contact node slips and the result equals
 //   frictionless sliding (g = 0, where no active set is run) up to O(g);
 //   the tangential traction is at most g.
@@ -22,14 +24,19 @@ using namespace VPContact;
 
 // The statistics table of a run of the paper scene with @p friction_bound
 // (empty: no contact, bottom clamped), as rows of named values.
+template <int dim>
 std::vector<std::map<std::string, double>>
 run(const std::string &friction_bound)
 {
   ParameterHandler prm;
-  Simulator<2>::declare_parameters(prm);
-  prm.parse_input(SOURCE_DIR "/../../prm/paper_fig1.prm");
+  Simulator<dim>::declare_parameters(prm);
+  prm.parse_input(dim == 2 ? SOURCE_DIR "/../../prm/paper_fig1.prm" :
+                             SOURCE_DIR "/../../prm/paper_fig1_3d.prm");
   prm.enter_subsection("Geometry");
-  prm.set("Subdivisions", "8, 8");
+  prm.set("Subdivisions", dim == 2 ? "8, 8" : "4, 4, 4");
+  prm.leave_subsection();
+  prm.enter_subsection("Damage");
+  prm.set("Model", "none");
   prm.leave_subsection();
   prm.enter_subsection("Time");
   prm.set("End time", "0.04");
@@ -40,7 +47,7 @@ run(const std::string &friction_bound)
   prm.enter_subsection("Boundary conditions");
   if (friction_bound.empty())
     {
-      prm.set("Clamped boundary ids", "0, 2");
+      prm.set("Clamped boundary ids", dim == 2 ? "0, 2" : "0, 4");
       prm.set("Contact boundary ids", "");
     }
   prm.leave_subsection();
@@ -51,7 +58,7 @@ run(const std::string &friction_bound)
   prm.set("Directory", "run");
   prm.set("Output every", "0");
   prm.leave_subsection();
-  run_quietly<2>(prm, ".");
+  run_quietly<dim>(prm, ".");
   const auto rows = read_statistics("run/statistics.csv");
   return rows;
 }
@@ -70,15 +77,15 @@ largest_difference(const std::vector<std::map<std::string, double>> &a,
   return difference;
 }
 
-int
-main(int argc, char **argv)
+template <int dim>
+void
+check_limits()
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-
-  const auto frictionless = run("0");
-  const auto tiny         = run("1e-9");
-  const auto huge         = run("1e12");
-  const auto clamped      = run("");
+  std::printf("%dD:\n", dim);
+  const auto frictionless = run<dim>("0");
+  const auto tiny         = run<dim>("1e-9");
+  const auto huge         = run<dim>("1e12");
+  const auto clamped      = run<dim>("");
 
   std::printf("g = 1e-9: stick/slip at the last step %g/%g, largest "
               "|sigma_tau|/g %.3f\n",
@@ -102,4 +109,14 @@ main(int argc, char **argv)
   std::printf("stick vs frictionless differ (the test can tell them apart): "
               "%s\n",
               d_regimes > 1e-3 ? "yes" : "NO");
+}
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  check_limits<2>();
+  check_limits<3>();
 }
