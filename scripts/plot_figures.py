@@ -2,7 +2,9 @@
 """Figures of the paper scene from vpcontact's own output (run by
 scripts/figures): the paper's Figs. 2-4 (deformed mesh with the initial
 outline, von Mises norm and damage at the final time), the contact status
-along the base for paper_fig1_slip, and time histories from statistics.csv.
+along the base for paper_fig1_slip, the contact face and the damage of the
+3D scenes (paper_fig1_3d_slip, paper_fig1_3d), and time histories from
+statistics.csv.
 
 Usage: plot_figures.py RESULTS_FOLDER FIGURE_FOLDER
 Needs Debian's python3-matplotlib and python3-vtk9 (/usr/bin/python3)."""
@@ -161,8 +163,94 @@ def slip_figures(folder, out, g=20.0):
     save(fig, os.path.join(out, "paper_fig1_slip_history.png"))
 
 
+def read_points(pvtu):
+    """Points (n x 3) and point arrays by name of a 3D output (the points
+    repeat per cell; a point's arrays are its node's values)."""
+    reader = vtk.vtkXMLPUnstructuredGridReader()
+    reader.SetFileName(pvtu)
+    reader.Update()
+    grid = reader.GetOutput()
+    data = grid.GetPointData()
+    return (vtk_to_numpy(grid.GetPoints().GetData()),
+            {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
+             for i in range(data.GetNumberOfArrays())})
+
+
+def slip3d_figures(folder, out, g=20.0):
+    """The contact face z = 0 of paper_fig1_3d_slip at three times: stick
+    and slip nodes and the tangential traction sigma_tau / g as arrows."""
+    series = time_series(folder)
+    shown = [series[1], series[len(series) // 2], series[-1]]
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.4))
+    for ax, (t, pvtu) in zip(axes, shown):
+        points, arrays = read_points(pvtu)
+        face = np.isclose(points[:, 2], 0.0) & (arrays["contact_status"] > 0)
+        _, first = np.unique(np.round(points[face], 12), axis=0,
+                             return_index=True)
+        p = points[face][first]
+        status = arrays["contact_status"][face][first]
+        traction = arrays["tangential_traction"][face][first] / g
+        for value, marker, label in ((1, "o", "stick"), (2, "x", "slip")):
+            pick = status == value
+            ax.plot(p[pick, 0], p[pick, 1], marker, ms=4, label=label)
+        ax.quiver(p[:, 0], p[:, 1], traction[:, 0], traction[:, 1],
+                  angles="xy", scale_units="xy", scale=12, width=0.004)
+        ax.set_aspect("equal")
+        ax.set_xlim(-0.05, 1.05)
+        ax.set_ylim(-0.05, 1.05)
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+        ax.set_title(f"t = {t:g} s")
+    axes[0].legend(loc="upper left", fontsize=8)
+    fig.suptitle("paper_fig1_3d_slip: the contact face z = 0 (clamped edge "
+                 "x = 0); arrows: $\\sigma_\\tau / g$, length 1/12 at "
+                 "$|\\sigma_\\tau| = g$")
+    save(fig, os.path.join(out, "paper_fig1_3d_slip_contact.png"))
+
+
+def paper3d_figures(folder, out):
+    """The damage of paper_fig1_3d at the final time on the faces y = 0 and
+    z = 0 (the contact face), and its time histories."""
+    t, pvtu = time_series(folder)[-1]
+    points, arrays = read_points(pvtu)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
+    for ax, (axis, plane) in zip(axes, ((1, "y = 0, the side"),
+                                        (2, "z = 0, the contact face"))):
+        face = np.isclose(points[:, axis], 0.0)
+        other = [a for a in range(3) if a != axis]
+        shading = ax.tricontourf(points[face, other[0]], points[face, other[1]],
+                                 arrays["damage"][face],
+                                 levels=np.linspace(0, 1, 21), cmap="inferno")
+        ax.set_aspect("equal")
+        ax.set_xlabel("xyz"[other[0]] + " [m]")
+        ax.set_ylabel("xyz"[other[1]] + " [m]")
+        ax.set_title(plane)
+    fig.colorbar(shading, ax=axes, label="damage $\\zeta$ (1 sound, 0 broken)")
+    fig.suptitle(f"paper_fig1_3d: damage at t = {t:g} s")
+    save(fig, os.path.join(out, "paper_fig1_3d_damage.png"))
+
+    s = statistics(folder)
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
+    axes[0].plot(s["time"], s["von_mises_max"])
+    axes[0].set_ylabel("max von Mises [N/m$^2$]")
+    axes[1].plot(s["time"], s["damage_min"], label="min $\\zeta$")
+    axes[1].plot(s["time"], 1 - s["damaged_fraction"],
+                 label="sound fraction ($\\zeta$ = 1)")
+    axes[1].set_ylim(-0.05, 1.05)
+    axes[1].legend()
+    axes[2].plot(s["time"], s["friction_utilisation"])
+    axes[2].set_ylabel("max $|\\sigma_\\tau|/g$")
+    for a in axes:
+        a.set_xlabel("t [s]")
+        a.grid(alpha=0.3)
+    fig.suptitle("paper_fig1_3d: time histories from statistics.csv")
+    save(fig, os.path.join(out, "paper_fig1_3d_history.png"))
+
+
 if __name__ == "__main__":
     results, figures = sys.argv[1], sys.argv[2]
     os.makedirs(figures, exist_ok=True)
     paper_figures(os.path.join(results, "paper_fig1"), figures)
     slip_figures(os.path.join(results, "paper_fig1_slip"), figures)
+    slip3d_figures(os.path.join(results, "paper_fig1_3d_slip"), figures)
+    paper3d_figures(os.path.join(results, "paper_fig1_3d"), figures)

@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""Runs the 3D paper scene (prm/paper_fig1_3d.prm) on N^3 cells with CG and
+AMG on the given numbers of MPI ranks for a few steps, and writes the time
+per step, its split by phase and the peak memory to doc/figures/bench_3d.csv;
+scripts/bench_report.py puts them into doc/performance.md.
+
+Usage: bench_3d.py VPCONTACT [--cells N] [--steps S] [--ranks R ...]
+A benchmark reports figures: nothing here passes or fails."""
+import argparse
+import datetime
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import bench  # noqa: E402  (next to this file)
+import bench_report  # noqa: E402
+
+COLUMNS = ["cells_per_side", "ranks", "steps", "status", "dofs", "total_s",
+           "setup_s", "per_step_ms"] + [p + "_ms" for p in bench.PHASES] + [
+           "mem_rank0_mb", "mem_all_mb", "linear_its", "active_set_its",
+           "phases", "date", "cpu", "commit"]
+
+
+def run(a, ranks):
+    tag = f"paper3d_{a.cells}_{ranks}"
+    folder = os.path.join(a.workdir, "runs", tag)
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(os.path.join(a.workdir, "logs"), exist_ok=True)
+    prm = os.path.join(a.workdir, tag + ".prm")
+    with open(prm, "w") as f:
+        f.write(f"include {ROOT}/prm/paper_fig1_3d.prm\n"
+                f"subsection Geometry\n  set Subdivisions = "
+                f"{a.cells}, {a.cells}, {a.cells}\nend\n"
+                f"subsection Time\n  set End time = {a.steps * 0.01!r}\nend\n"
+                f"subsection Solver\n  set Linear solver = CG with AMG\nend\n"
+                f"subsection Error estimate\n  set Estimate error = false\n"
+                f"end\nsubsection Output\n  set Directory = {folder}\n"
+                f"  set Output every = 0\nend\n")
+    out, row = bench.launch(a, [a.executable, prm], ranks, tag,
+                            lambda out: "Total wallclock" in out)
+    row.update(cells_per_side=a.cells, ranks=ranks, steps=a.steps)
+    if row["status"] != "ok":
+        return row
+    total, phases = bench.timer_table(out)
+    groups = {g: 0. for g in bench.PHASES + ["setup"]}
+    for name, (calls, seconds, _) in phases.items():
+        group = next((g for g, p in bench.PHASE_GROUPS
+                      if re.search(p, name, re.I)), "other")
+        groups[group] += seconds
+    dofs = re.search(r"mesh: \d+ cells, (\d+) dofs", out)
+    memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
+    row.update(dofs=int(dofs.group(1)), total_s=total,
+               setup_s=groups["setup"],
+               per_step_ms=1000 * (total - groups["setup"]) / a.steps,
+               mem_rank0_mb=int(memory.group(1)) / 1024 if memory else "",
+               phases=";".join(f"{n}={c}x{s:.6g}"
+                               for n, (c, s, _) in sorted(phases.items())))
+    for g in bench.PHASES:
+        row[g + "_ms"] = 1000 * groups[g] / a.steps
+    stats = open(os.path.join(folder, "statistics.csv")).read().splitlines()
+    head = stats[0].split(",")
+    steps = [dict(zip(head, s.split(","))) for s in stats[2:]]
+    for column in ("linear", "active_set"):
+        row[column + "_its"] = sum(int(r[column + "_iterations"])
+                                   for r in steps) / len(steps)
+    shutil.rmtree(folder, ignore_errors=True)
+    return row
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("executable")
+    p.add_argument("--cells", type=int, default=64)
+    p.add_argument("--steps", type=int, default=5)
+    p.add_argument("--ranks", type=int, nargs="+", default=[2])
+    p.add_argument("--workdir", default="/tmp/vpcontact_bench_3d")
+    p.add_argument("--csv", default=os.path.join(ROOT, "doc", "figures",
+                                                 "bench_3d.csv"))
+    a = p.parse_args()
+    machine = bench.machine()
+    rows = []
+    for ranks in a.ranks:
+        row = run(a, ranks)
+        row.update(date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
+                   cpu=machine.get("cpu", ""), commit=machine.get("commit", ""))
+        print({k: row.get(k) for k in ("ranks", "status", "dofs", "total_s",
+                                       "per_step_ms")}, flush=True)
+        rows.append(row)
+    import csv
+    with open(a.csv, "w", newline="") as f:
+        w = csv.DictWriter(f, COLUMNS, extrasaction="ignore")
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v)
+                        for k, v in r.items()})
+    subprocess.run([sys.executable, os.path.join(ROOT, "scripts",
+                                                 "bench_report.py")],
+                   check=True)
+
+
+if __name__ == "__main__":
+    main()
