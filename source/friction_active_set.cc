@@ -155,13 +155,25 @@ namespace VPContact
 
 
   template <int dim>
-  Tensor<1, dim>
-  FrictionActiveSet<dim>::Node::tangential(const Tensor<1, dim> &v) const
+  typename FrictionActiveSet<dim>::TangentVector
+  FrictionActiveSet<dim>::Node::coordinates(const Tensor<1, dim> &v) const
   {
-    Tensor<1, dim> p;
-    for (const auto &t : tangents)
-      p += (v * t) * t;
-    return p;
+    TangentVector c;
+    for (unsigned int k = 0; k < tangents.size(); ++k)
+      c[k] = v * tangents[k];
+    return c;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  FrictionActiveSet<dim>::Node::vector(const TangentVector &c) const
+  {
+    Tensor<1, dim> v;
+    for (unsigned int k = 0; k < tangents.size(); ++k)
+      v += c[k] * tangents[k];
+    return v;
   }
 
 
@@ -205,9 +217,10 @@ namespace VPContact
     for (const auto &node : nodes)
       if (node.owned && node.status == ContactStatus::slip)
         {
+          const Tensor<1, dim> n = node.vector(node.direction);
           for (unsigned int d = 0; d < dim; ++d)
             {
-              force(d) = -node.length * node.g * node.direction[d];
+              force(d) = -node.length * node.g * n[d];
               dofs[d]  = node.dofs[d];
             }
           constraints.distribute_local_to_global(force, dofs, rhs);
@@ -233,16 +246,16 @@ namespace VPContact
           && node.tangents.size() > 1)
         {
           dofs.assign(node.dofs.begin(), node.dofs.end());
-          stiffness = 0.;
+          const Tensor<1, dim> n = node.vector(node.direction);
+          stiffness              = 0.;
           for (const auto &t : node.tangents)
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
                 stiffness(i, j) += t[i] * t[j];
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = 0; j < dim; ++j)
-              stiffness(i, j)
-                = node.length * node.slip_stiffness
-                  * (stiffness(i, j) - node.direction[i] * node.direction[j]);
+              stiffness(i, j) = node.length * node.slip_stiffness
+                                * (stiffness(i, j) - n[i] * n[j]);
           constraints.distribute_local_to_global(stiffness, dofs, matrix);
         }
   }
@@ -266,8 +279,8 @@ namespace VPContact
             r[d]  = residual(node.dofs[d]);
             du[d] = increment(node.dofs[d]);
           }
-        node.lambda = node.tangential(r) / node.length;
-        node.slip   = node.tangential(du);
+        node.lambda = node.coordinates(r) / node.length;
+        node.slip   = node.coordinates(du);
 
         // c of the order of E/h, so that lambda and c w compare alike.
         const double c    = c_factor * youngs_modulus / node.length;
@@ -362,16 +375,19 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector &status,
     TrilinosWrappers::MPI::Vector &traction) const
   {
+    status   = 0.;
+    traction = 0.;
     for (const auto &node : nodes)
       if (node.owned)
         {
           status(node.dofs[0]) = static_cast<double>(node.status);
           // In 2D the scalar along the tangent, in 3D the vector.
+          const Tensor<1, dim> sigma_tau = -node.vector(node.lambda);
           if (dim == 2)
-            traction(node.dofs[0]) = -node.lambda * node.tangents[0];
+            traction(node.dofs[0]) = -node.lambda[0];
           else
             for (unsigned int d = 0; d < dim; ++d)
-              traction(node.dofs[d]) = -node.lambda[d];
+              traction(node.dofs[d]) = sigma_tau[d];
         }
     status.compress(VectorOperation::insert);
     traction.compress(VectorOperation::insert);
@@ -400,7 +416,7 @@ namespace VPContact
         {
           state(node.dofs[0]) = static_cast<double>(node.status);
           for (unsigned int k = 0; k < node.tangents.size(); ++k)
-            state(node.dofs[k + 1]) = node.direction * node.tangents[k];
+            state(node.dofs[k + 1]) = node.direction[k];
         }
     state.compress(VectorOperation::insert);
   }
@@ -413,10 +429,10 @@ namespace VPContact
   {
     for (auto &node : nodes)
       {
-        const double   status = state(node.dofs[0]);
-        Tensor<1, dim> direction;
+        const double  status = state(node.dofs[0]);
+        TangentVector direction;
         for (unsigned int k = 0; k < node.tangents.size(); ++k)
-          direction += state(node.dofs[k + 1]) * node.tangents[k];
+          direction[k] = state(node.dofs[k + 1]);
         const double size = direction.norm();
         AssertThrow((status == 1. && size == 0.)
                       || (status == 2. && std::abs(size - 1.) < 1e-8),

@@ -53,6 +53,7 @@ namespace VPContact
     IncrementPredictor::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
+    MonitorPoints<dim>::declare_parameters(prm);
     ErrorEstimator<dim>::declare_parameters(prm);
     ConvergenceStudy<dim>::declare_parameters(prm);
     Checkpointing::declare_parameters(prm);
@@ -93,6 +94,7 @@ namespace VPContact
     displacement.solver.parse_parameters(prm);
     increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
+    monitor_points.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
     convergence_study.parse_parameters(prm,
                                        output_writer.directory(),

@@ -265,6 +265,7 @@ namespace VPContact
     statistics.add_value("u_max", measures.u_max);
     statistics.add_value("von_mises_max", measures.von_mises_max);
     statistics.add_value("elastic_energy", measures.energy);
+    monitor_points.add_statistics(solution, statistics);
     return "step " + std::to_string(n) + "  t = " + format("%.6g", time)
            + "  |u|max = " + format("%.6e", measures.u_max)
            + "  von Mises max = " + format("%.6e", measures.von_mises_max)
@@ -428,9 +429,8 @@ namespace VPContact
                              DataOut<dim>::type_dof_data,
                              interpretation);
 
-    // Contact nodes: status (0 none, 1 stick, 2 slip) and tangential
-    // traction sigma_tau, carried by the first two components of a nodal
-    // vector.
+    // Contact nodes: the status (0 none, 1 stick, 2 slip) in one nodal
+    // vector, the tangential traction sigma_tau in another.
     TrilinosWrappers::MPI::BlockVector status_blocks, traction_blocks;
     const ContactStatusField<dim>      status_field;
     const TractionField<dim>           traction_field;
@@ -438,8 +438,6 @@ namespace VPContact
       {
         TrilinosWrappers::MPI::Vector status(solution_owned);
         TrilinosWrappers::MPI::Vector traction(solution_owned);
-        status   = 0.;
-        traction = 0.;
         friction_problem->fill_output(status, traction);
         status_blocks   = blocks(status);
         traction_blocks = blocks(traction);

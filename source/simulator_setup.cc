@@ -62,6 +62,7 @@ namespace VPContact
     if (friction_problem)
       friction_problem->clear();
     number_dofs();
+    monitor_points.setup(dof_handler);
 
     // The constraints at t = 0 have the structure of those of every step
     // (only inhomogeneities of prescribed displacements change), so the

@@ -22,7 +22,13 @@ namespace VPContact
     const double         size = z.norm();
     if (size <= g)
       return {ContactStatus::stick, Tensor<1, dim>(), 0.};
-    return {ContactStatus::slip, z / size, g * c / (size - g)};
+    // Divided entry by entry: Tensor's operator/ multiplies by 1/size, which
+    // on a line gives 1 - 1e-16 instead of 1, and a direction that depends on
+    // the rounding of the reciprocal.
+    Tensor<1, dim> n;
+    for (unsigned int d = 0; d < dim; ++d)
+      n[d] = z[d] / size;
+    return {ContactStatus::slip, n, g * c / (size - g)};
   }
 
 

@@ -130,7 +130,8 @@ namespace VPContact
     max_violation(const double slip_tolerance) const;
 
     /**
-     * Write the status (0 none, 1 stick, 2 slip) into the x component of
+     * Zero both vectors, then write the status (0 none, 1 stick, 2 slip)
+     * into the x component of
      * the owned contact nodes of @p status and the tangential traction
      * sigma_tau = -lambda into their displacement components of
      * @p traction (vectors on all dofs); in 2D its component along the
@@ -166,25 +167,33 @@ namespace VPContact
     read_state(const TrilinosWrappers::MPI::Vector &state);
 
   private:
+    /// Tangential vectors in the coordinates of a node's tangent basis
+    /// (dim - 1 of them; on a tangent line the second is 0).
+    using TangentVector = Tensor<1, dim - 1>;
+
     struct Node
     {
       std::array<types::global_dof_index, dim> dofs;
       std::vector<types::global_dof_index>     free_dofs;
-      /// An orthonormal basis of the tangent space.
+      /// An orthonormal basis of the tangent space (1 or dim - 1 vectors).
       std::vector<Tensor<1, dim>> tangents;
       Point<dim>                  position;
       bool                        owned  = false;
       double                      length = 0;
       double                      g      = 0;
-      Tensor<1, dim>              lambda;
-      Tensor<1, dim>              slip;
+      TangentVector               lambda;
+      TangentVector               slip;
       ContactStatus               status = ContactStatus::stick;
-      Tensor<1, dim>              direction;
+      TangentVector               direction;
       double                      slip_stiffness = 0;
 
-      /// P v: the tangential part of @p v.
+      /// The coordinates of the tangential part of @p v.
+      TangentVector
+      coordinates(const Tensor<1, dim> &v) const;
+
+      /// The vector of the coordinates @p c.
       Tensor<1, dim>
-      tangential(const Tensor<1, dim> &v) const;
+      vector(const TangentVector &c) const;
     };
 
     /// The node of the vertex @p v of @p face, if it is a contact node.

@@ -16,6 +16,7 @@
 #include <vpcontact/geometry.h>
 #include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
+#include <vpcontact/monitor_points.h>
 #include <vpcontact/output_writer.h>
 #include <vpcontact/quadrature_history.h>
 #include <vpcontact/statistics.h>
@@ -368,6 +369,7 @@ namespace VPContact
     IncrementPredictor                    increment_predictor;
     OutputWriter<dim>                     output_writer;
     Verification<dim>                     verification;
+    MonitorPoints<dim>                    monitor_points;
     ConvergenceStudy<dim>                 convergence_study;
     ErrorEstimator<dim>                   error_estimator;
     /// The diagonal of the body's bounding box, the scale of the

@@ -5,9 +5,11 @@
 // contact nodes are the 2D ones twice (at y = 0 and y = 1/8), each with
 // the tangent line x: the same stick and slip sets, the same displacement
 // and traction. The test runs both for 30 steps, while the slip zone grows,
-// and prints the largest differences over the steps.
+// and prints the largest differences over the steps, of the statistics and
+// of the displacement at four monitor points (2D (x, y) is 3D (x, y', y)).
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -28,9 +30,19 @@ run()
   set_entry(prm, "Output", "Directory", "run");
   set_entry(prm, "Output", "Output every", "0");
   if (dim == 2)
-    set_entry(prm, "Geometry", "Subdivisions", "8, 8");
+    {
+      set_entry(prm, "Geometry", "Subdivisions", "8, 8");
+      set_entry(prm,
+                "Output",
+                "Monitor points",
+                "1, 1; 0.5, 0; 1, 0; 0.5, 0.55");
+    }
   else
     {
+      set_entry(prm,
+                "Output",
+                "Monitor points",
+                "1, 0.0625, 1; 0.5, 0, 0; 1, 0.125, 0; 0.5, 0.0625, 0.55");
       set_entry(prm, "Geometry", "Upper corner", "1, 0.125, 1");
       set_entry(prm, "Geometry", "Subdivisions", "8, 1, 8");
       set_entry(prm, "Boundary conditions", "Roller boundary ids", "2:y, 3:y");
@@ -52,6 +64,7 @@ main(int argc, char **argv)
 
   bool   same_sets = plane.size() == slab.size();
   double d_u = 0, d_utilisation = 0, d_energy = 0, violation = 0;
+  double d_monitor = 0;
   for (unsigned int n = 1; same_sets && n < plane.size(); ++n)
     {
       same_sets = same_sets
@@ -68,6 +81,16 @@ main(int argc, char **argv)
                                    - plane[n].at("elastic_energy"))
                             / plane[n].at("elastic_energy"));
       violation     = std::max(violation, slab[n].at("friction_violation"));
+      for (const std::string point : {"1", "2", "3", "4"})
+        {
+          const auto       &u = plane[n], &v = slab[n];
+          const std::string m = "monitor" + point + "_u";
+          d_monitor
+            = std::max({d_monitor,
+                        std::abs(v.at(m + "x") - u.at(m + "x")) / u.at("u_max"),
+                        std::abs(v.at(m + "z") - u.at(m + "y")) / u.at("u_max"),
+                        std::abs(v.at(m + "y")) / u.at("u_max")});
+        }
     }
   std::printf("2D stick/slip at steps 1, 15, 30: %g/%g, %g/%g, %g/%g\n",
               plane[1].at("stick_nodes"),
@@ -80,6 +103,9 @@ main(int argc, char **argv)
               same_sets ? "yes" : "NO");
   std::printf("largest relative difference of u_max below 1e-8: %s\n",
               d_u < 1e-8 ? "yes" : "NO");
+  std::printf("largest difference of u at the monitor points, relative to "
+              "u_max, below 1e-8: %s\n",
+              d_monitor < 1e-8 ? "yes" : "NO");
   std::printf("largest difference of max|sigma_tau|/g below 1e-8: %s\n",
               d_utilisation < 1e-8 ? "yes" : "NO");
   std::printf("largest relative difference of the energy per width below "
