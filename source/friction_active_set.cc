@@ -231,33 +231,81 @@ namespace VPContact
 
 
   template <int dim>
+  FullMatrix<double>
+  FrictionActiveSet<dim>::Node::slip_stiffness_matrix(const TangentVector &n,
+                                                      const double beta) const
+  {
+    // m beta (P - n n^T) with P = sum_k t_k t_k^T; on a tangent line
+    // P = n n^T and the matrix is zero.
+    const Tensor<1, dim> n_vector = vector(n);
+    FullMatrix<double>   stiffness(dim, dim);
+    for (const auto &t : tangents)
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          stiffness(i, j) += t[i] * t[j];
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        stiffness(i, j)
+          = length * beta * (stiffness(i, j) - n_vector[i] * n_vector[j]);
+    return stiffness;
+  }
+
+
+
+  template <int dim>
   void
   FrictionActiveSet<dim>::add_slip_stiffness(
     const AffineConstraints<double> &constraints,
-    TrilinosWrappers::SparseMatrix  &matrix) const
+    TrilinosWrappers::SparseMatrix  &matrix)
   {
-    // m_i beta_i (P_i - n_i n_i^T) in the node's displacement components;
-    // the constraints carry it over to the free ones. On a tangent line
-    // P_i = n_i n_i^T and there is nothing to add.
-    FullMatrix<double>                   stiffness(dim, dim);
+    // The constraints carry the node's stiffness over to its free degrees
+    // of freedom.
     std::vector<types::global_dof_index> dofs;
-    for (const auto &node : nodes)
-      if (node.owned && node.status == ContactStatus::slip
-          && node.tangents.size() > 1)
+    for (auto &node : nodes)
+      {
+        const bool slips         = node.status == ContactStatus::slip;
+        node.assembled_direction = slips ? node.direction : TangentVector();
+        node.assembled_stiffness = slips ? node.slip_stiffness : 0.;
+        if (node.owned && slips && node.tangents.size() > 1)
+          {
+            dofs.assign(node.dofs.begin(), node.dofs.end());
+            constraints.distribute_local_to_global(
+              node.slip_stiffness_matrix(node.direction, node.slip_stiffness),
+              dofs,
+              matrix);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionActiveSet<dim>::update_slip_stiffness(
+    const AffineConstraints<double> &constraints,
+    TrilinosWrappers::SparseMatrix  &matrix)
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (auto &node : nodes)
+      if (node.status == ContactStatus::slip && node.tangents.size() > 1
+          && (node.direction != node.assembled_direction
+              || node.slip_stiffness != node.assembled_stiffness))
         {
-          dofs.assign(node.dofs.begin(), node.dofs.end());
-          const Tensor<1, dim> n = node.vector(node.direction);
-          stiffness              = 0.;
-          for (const auto &t : node.tangents)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                stiffness(i, j) += t[i] * t[j];
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              stiffness(i, j) = node.length * node.slip_stiffness
-                                * (stiffness(i, j) - n[i] * n[j]);
-          constraints.distribute_local_to_global(stiffness, dofs, matrix);
+          if (node.owned)
+            {
+              FullMatrix<double> change
+                = node.slip_stiffness_matrix(node.direction,
+                                             node.slip_stiffness);
+              change.add(-1.,
+                         node.slip_stiffness_matrix(node.assembled_direction,
+                                                    node.assembled_stiffness));
+              dofs.assign(node.dofs.begin(), node.dofs.end());
+              constraints.distribute_local_to_global(change, dofs, matrix);
+            }
+          node.assembled_direction = node.direction;
+          node.assembled_stiffness = node.slip_stiffness;
         }
+    matrix.compress(VectorOperation::add);
   }
 
 

@@ -103,9 +103,20 @@ namespace VPContact
   void
   FrictionProblem<dim>::add_slip_stiffness(
     const AffineConstraints<double> &constraints,
-    TrilinosWrappers::SparseMatrix  &matrix) const
+    TrilinosWrappers::SparseMatrix  &matrix)
   {
     active_set.add_slip_stiffness(constraints, matrix);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::update_slip_stiffness(
+    const AffineConstraints<double> &constraints,
+    TrilinosWrappers::SparseMatrix  &matrix)
+  {
+    active_set.update_slip_stiffness(constraints, matrix);
   }
 
 

@@ -3,6 +3,8 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/linear_solver.h>
 
+#include <deal.II/lac/solver_cg.h>
+
 namespace VPContact
 {
   void
@@ -88,6 +90,8 @@ namespace VPContact
   LinearSolver::clear()
   {
     solver.reset();
+    matrix                   = nullptr;
+    changed_since_initialize = false;
   }
 
 
@@ -99,6 +103,53 @@ namespace VPContact
     clear();
     solver = create_spd_solver(linear_algebra, method, "Solver/Linear solver");
     solver->initialize(matrix, near_null_space);
+    this->matrix             = &matrix;
+    changed_since_initialize = false;
+    iterations_before = iterations_after = 0;
+  }
+
+
+
+  void
+  LinearSolver::matrix_changed()
+  {
+    changed_since_initialize = true;
+  }
+
+
+
+  bool
+  LinearSolver::preconditioner_outdated() const
+  {
+    // A factorization solves in one step, AMG in its own count; a few more
+    // CG iterations are cheaper than a new factorization or hierarchy.
+    return changed_since_initialize
+           && iterations_after > std::max(2 * iterations_before, 10u);
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve_changed_matrix(TrilinosWrappers::MPI::Vector       &x,
+                                     const TrilinosWrappers::MPI::Vector &b,
+                                     SolverControl &control)
+  {
+    // The preconditioner or the factors of the matrix as it was, applied by
+    // the SpdSolver of either package to Trilinos vectors.
+    struct Preconditioner
+    {
+      SpdSolver *solver;
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        solver->precondition(dst, src);
+      }
+    };
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    cg.solve(*matrix, x, b, Preconditioner{solver.get()});
+    iterations_after = control.last_step();
+    return iterations_after;
   }
 
 
@@ -120,7 +171,10 @@ namespace VPContact
     SolverControl control(max_iterations, relative_tolerance * b_norm);
     try
       {
-        return solver->solve(x, b, control);
+        if (changed_since_initialize)
+          return solve_changed_matrix(x, b, control);
+        iterations_before = solver->solve(x, b, control);
+        return iterations_before;
       }
     catch (const SolverControl::NoConvergence &e)
       {

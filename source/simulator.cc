@@ -450,6 +450,8 @@ namespace VPContact
   void
   Simulator<dim>::solve_displacement()
   {
+    if (displacement.solver.preconditioner_outdated())
+      initialize_linear_solver();
     TimerOutput::Scope t(computing_timer, "Solve");
     // K du = b on the displacement block, whose entries lead the local
     // entries of the full vector (see setup_dofs()), from the current
@@ -498,11 +500,19 @@ namespace VPContact
           "to the previous step is complete in "
         + output_writer.directory() + "."));
     if (changes.n_stick_changed > 0)
-      make_constraints(time, &solution);
-    if (changes.n_matrix_changed > 0)
       {
+        make_constraints(time, &solution);
         assemble_stiffness_matrix();
         initialize_linear_solver();
+      }
+    else if (changes.n_matrix_changed > 0)
+      {
+        // Only slip directions turned: the matrix changes at those nodes,
+        // and the preconditioner or factors of the matrix as it was still
+        // precondition CG well (LinearSolver::matrix_changed()).
+        friction_problem->update_slip_stiffness(constraints,
+                                                displacement.matrix);
+        displacement.solver.matrix_changed();
       }
     return false;
   }

@@ -11,6 +11,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -96,7 +97,17 @@ namespace VPContact
     /// slip node whose tangent space is a plane (before compress()).
     void
     add_slip_stiffness(const AffineConstraints<double> &constraints,
-                       TrilinosWrappers::SparseMatrix  &matrix) const;
+                       TrilinosWrappers::SparseMatrix  &matrix);
+
+    /**
+     * After an update() that turned slip directions but changed no set:
+     * add to @p matrix, which holds the slip stiffness of the last
+     * add_slip_stiffness() or update_slip_stiffness(), the change of every
+     * owned node's slip stiffness, and compress it.
+     */
+    void
+    update_slip_stiffness(const AffineConstraints<double> &constraints,
+                          TrilinosWrappers::SparseMatrix  &matrix);
 
     /**
      * Recompute lambda and w from the ghosted @p residual and @p increment
@@ -186,6 +197,14 @@ namespace VPContact
       ContactStatus               status = ContactStatus::stick;
       TangentVector               direction;
       double                      slip_stiffness = 0;
+      /// The direction and slip stiffness the matrix holds.
+      TangentVector assembled_direction;
+      double        assembled_stiffness = 0;
+
+      /// m beta (P - n n^T) of the direction @p n (coordinates) and
+      /// @p beta, in the node's displacement components.
+      FullMatrix<double>
+      slip_stiffness_matrix(const TangentVector &n, const double beta) const;
 
       /// The coordinates of the tangential part of @p v.
       TangentVector

@@ -76,7 +76,13 @@ namespace VPContact
     /// The slip nodes' stiffness (3D) into @p matrix, before compress().
     void
     add_slip_stiffness(const AffineConstraints<double> &constraints,
-                       TrilinosWrappers::SparseMatrix  &matrix) const;
+                       TrilinosWrappers::SparseMatrix  &matrix);
+
+    /// The change of the slip nodes' stiffness since the matrix was last
+    /// given it, after an update() that changed no set; compresses it.
+    void
+    update_slip_stiffness(const AffineConstraints<double> &constraints,
+                          TrilinosWrappers::SparseMatrix  &matrix);
 
     /**
      * One active-set iteration after a solve: the residual by

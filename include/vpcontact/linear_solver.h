@@ -59,6 +59,20 @@ namespace VPContact
     solve(TrilinosWrappers::MPI::Vector       &x,
           const TrilinosWrappers::MPI::Vector &b);
 
+    /**
+     * The matrix given to initialize() changed in place by a little (the
+     * slip stiffness of a friction iteration). Later solves run deal.II's CG
+     * on the changed matrix, preconditioned by the preconditioner or the
+     * factors built for it in initialize(), until the next initialize().
+     */
+    void
+    matrix_changed();
+
+    /// Whether a solve after matrix_changed() needed so many more
+    /// iterations than the solves before it that initialize() pays off.
+    bool
+    preconditioner_outdated() const;
+
     /// One application of the preconditioner or one solve with the factors.
     void
     precondition(TrilinosWrappers::MPI::Vector       &dst,
@@ -80,6 +94,17 @@ namespace VPContact
     double                     relative_tolerance = 1e-10;
     unsigned int               max_iterations     = 1000;
     std::unique_ptr<SpdSolver> solver;
+    /// The matrix of initialize(), and whether it changed since.
+    const TrilinosWrappers::SparseMatrix *matrix                   = nullptr;
+    bool                                  changed_since_initialize = false;
+    /// Iterations of the last solve before and after the matrix changed.
+    unsigned int iterations_before = 0;
+    unsigned int iterations_after  = 0;
+
+    unsigned int
+    solve_changed_matrix(TrilinosWrappers::MPI::Vector       &x,
+                         const TrilinosWrappers::MPI::Vector &b,
+                         SolverControl                       &control);
   };
 } // namespace VPContact
 
