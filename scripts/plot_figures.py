@@ -61,6 +61,27 @@ def save(fig, path):
     print("wrote", path)
 
 
+def histories(folder, out, scene):
+    """Time histories of a damage scene with friction from statistics.csv:
+    largest von Mises norm, damage, friction utilisation."""
+    s = statistics(folder)
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
+    axes[0].plot(s["time"], s["von_mises_max"])
+    axes[0].set_ylabel("max von Mises [N/m$^2$]")
+    axes[1].plot(s["time"], s["damage_min"], label="min $\\zeta$")
+    axes[1].plot(s["time"], 1 - s["damaged_fraction"],
+                 label="sound fraction ($\\zeta$ = 1)")
+    axes[1].set_ylim(-0.05, 1.05)
+    axes[1].legend()
+    axes[2].plot(s["time"], s["friction_utilisation"])
+    axes[2].set_ylabel("max $|\\sigma_\\tau|/g$")
+    for a in axes:
+        a.set_xlabel("t [s]")
+        a.grid(alpha=0.3)
+    fig.suptitle(f"{scene}: time histories from statistics.csv")
+    save(fig, os.path.join(out, f"{scene}_history.png"))
+
+
 def paper_figures(folder, out):
     t, pvtu = time_series(folder)[-1]
     points, cells, arrays = read(pvtu)
@@ -102,23 +123,7 @@ def paper_figures(folder, out):
     ax.set_title(f"Damage at t = {t:g} s")
     save(fig, os.path.join(out, "paper_fig1_damage.png"))
 
-    # Time histories.
-    s = statistics(folder)
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
-    axes[0].plot(s["time"], s["von_mises_max"])
-    axes[0].set_ylabel("max von Mises [N/m$^2$]")
-    axes[1].plot(s["time"], s["damage_min"], label="min $\\zeta$")
-    axes[1].plot(s["time"], 1 - s["damaged_fraction"],
-                 label="sound fraction ($\\zeta$ = 1)")
-    axes[1].set_ylim(-0.05, 1.05)
-    axes[1].legend()
-    axes[2].plot(s["time"], s["friction_utilisation"])
-    axes[2].set_ylabel("max $|\\sigma_\\tau|/g$")
-    for a in axes:
-        a.set_xlabel("t [s]")
-        a.grid(alpha=0.3)
-    fig.suptitle("paper_fig1: time histories from statistics.csv")
-    save(fig, os.path.join(out, "paper_fig1_history.png"))
+    histories(folder, out, "paper_fig1")
 
 
 def slip_figures(folder, out, g=20.0):
@@ -229,22 +234,7 @@ def paper3d_figures(folder, out):
     fig.suptitle(f"paper_fig1_3d: damage at t = {t:g} s")
     save(fig, os.path.join(out, "paper_fig1_3d_damage.png"))
 
-    s = statistics(folder)
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
-    axes[0].plot(s["time"], s["von_mises_max"])
-    axes[0].set_ylabel("max von Mises [N/m$^2$]")
-    axes[1].plot(s["time"], s["damage_min"], label="min $\\zeta$")
-    axes[1].plot(s["time"], 1 - s["damaged_fraction"],
-                 label="sound fraction ($\\zeta$ = 1)")
-    axes[1].set_ylim(-0.05, 1.05)
-    axes[1].legend()
-    axes[2].plot(s["time"], s["friction_utilisation"])
-    axes[2].set_ylabel("max $|\\sigma_\\tau|/g$")
-    for a in axes:
-        a.set_xlabel("t [s]")
-        a.grid(alpha=0.3)
-    fig.suptitle("paper_fig1_3d: time histories from statistics.csv")
-    save(fig, os.path.join(out, "paper_fig1_3d_history.png"))
+    histories(folder, out, "paper_fig1_3d")
 
 
 if __name__ == "__main__":
