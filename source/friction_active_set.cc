@@ -285,6 +285,10 @@ namespace VPContact
     const AffineConstraints<double> &constraints,
     TrilinosWrappers::SparseMatrix  &matrix)
   {
+    // No set changed, so the constraints are those the matrix was built
+    // with, and the new stiffness minus the one the matrix holds is the
+    // whole change. Every rank tracks what the matrix holds for the nodes
+    // it sees; the owner adds the change.
     std::vector<types::global_dof_index> dofs;
     for (auto &node : nodes)
       if (node.status == ContactStatus::slip && node.tangents.size() > 1
