@@ -349,9 +349,9 @@ def scene_3d(csv_path):
         f"{m['steps']} steps of k = 0.01 with `CG with AMG` (Trilinos ML), no "
         f"field output, measured by `scripts/bench_3d` at commit "
         f"{m['commit']} on {m['date']} ({m['cpu']}). Time per step in ms, "
-        "split as above; *AS its*: active-set iterations per step (each "
-        "reassembles the matrix and rebuilds AMG where a node changes "
-        "set).", "",
+        "split as above; *AS its*: friction active-set iterations per "
+        "step (one where a node changes set reassembles the matrix and "
+        "rebuilds AMG).", "",
         "| ranks | dofs | total [s] | per step [ms] | " +
         " | ".join(t for _, t in PHASE_TITLES) +
         " | CG its per step | AS its per step | memory rank 0 [MB] | "
