@@ -5,6 +5,8 @@
 
 #include <deal.II/lac/solver_cg.h>
 
+#include <algorithm>
+
 namespace VPContact
 {
   void
@@ -103,6 +105,9 @@ namespace VPContact
     clear();
     solver = create_spd_solver(linear_algebra, method, "Solver/Linear solver");
     solver->initialize(matrix, near_null_space);
+    // AMG's rigid motions, for a rebuild after the matrix changed in place.
+    if (method == SpdMethod::cg_amg && &near_null_space != &kept_null_space)
+      kept_null_space = near_null_space;
     this->matrix             = &matrix;
     changed_since_initialize = false;
     iterations_before = iterations_after = 0;
@@ -129,10 +134,11 @@ namespace VPContact
 
 
 
-  unsigned int
+  bool
   LinearSolver::solve_changed_matrix(TrilinosWrappers::MPI::Vector       &x,
                                      const TrilinosWrappers::MPI::Vector &b,
-                                     SolverControl &control)
+                                     const double  tolerance,
+                                     unsigned int &iterations)
   {
     // The preconditioner or the factors of the matrix as it was, applied by
     // the SpdSolver of either package to Trilinos vectors.
@@ -146,10 +152,27 @@ namespace VPContact
         solver->precondition(dst, src);
       }
     };
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    cg.solve(*matrix, x, b, Preconditioner{solver.get()});
-    iterations_after = control.last_step();
-    return iterations_after;
+    // Beyond a few times the iterations of a fresh solve, a new
+    // preconditioner is cheaper; where the change is large (a slip node's
+    // stiffness far above the elastic one) the old one may not converge
+    // at all.
+    SolverControl                       control(std::min(max_iterations,
+                                   std::max(4 * iterations_before, 50u)),
+                          tolerance);
+    const TrilinosWrappers::MPI::Vector start(x);
+    try
+      {
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        cg.solve(*matrix, x, b, Preconditioner{solver.get()});
+        iterations = iterations_after = control.last_step();
+        return true;
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        x          = start;
+        iterations = control.last_step();
+        return false;
+      }
   }
 
 
@@ -171,10 +194,18 @@ namespace VPContact
     SolverControl control(max_iterations, relative_tolerance * b_norm);
     try
       {
+        unsigned int stale_iterations = 0;
         if (changed_since_initialize)
-          return solve_changed_matrix(x, b, control);
+          {
+            if (solve_changed_matrix(x,
+                                     b,
+                                     control.tolerance(),
+                                     stale_iterations))
+              return stale_iterations;
+            initialize(*matrix, kept_null_space);
+          }
         iterations_before = solver->solve(x, b, control);
-        return iterations_before;
+        return stale_iterations + iterations_before;
       }
     catch (const SolverControl::NoConvergence &e)
       {

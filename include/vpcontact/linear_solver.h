@@ -63,7 +63,10 @@ namespace VPContact
      * The matrix given to initialize() changed in place by a little (the
      * slip stiffness of a friction iteration). Later solves run deal.II's CG
      * on the changed matrix, preconditioned by the preconditioner or the
-     * factors built for it in initialize(), until the next initialize().
+     * factors built for it in initialize(), until the next initialize(); a
+     * solve where that does not converge within a few times the iterations
+     * of a fresh solve builds them anew for the changed matrix and solves
+     * with those.
      */
     void
     matrix_changed();
@@ -101,10 +104,17 @@ namespace VPContact
     unsigned int iterations_before = 0;
     unsigned int iterations_after  = 0;
 
-    unsigned int
+    /// AMG's near null space, kept for a rebuild after matrix_changed().
+    NearNullSpace kept_null_space;
+
+    /// CG on the changed matrix with the old preconditioner; false (and
+    /// @p x unchanged) where it does not converge within a few times the
+    /// iterations of a fresh solve.
+    bool
     solve_changed_matrix(TrilinosWrappers::MPI::Vector       &x,
                          const TrilinosWrappers::MPI::Vector &b,
-                         SolverControl                       &control);
+                         const double                         tolerance,
+                         unsigned int                        &iterations);
   };
 } // namespace VPContact
 
