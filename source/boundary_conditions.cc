@@ -342,10 +342,12 @@ namespace VPContact
                                  constraints);
 
     if (!contact_ids.empty())
-      VectorTools::compute_no_normal_flux_constraints(dof_handler,
-                                                      0,
-                                                      contact_ids,
-                                                      constraints);
+      VectorTools::compute_no_normal_flux_constraints(
+        dof_handler,
+        0,
+        contact_ids,
+        constraints,
+        get_default_linear_mapping(dof_handler.get_triangulation()));
   }
 
 

@@ -4,6 +4,7 @@
 #include <vpcontact/cell_kinematics.h>
 
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping.h>
 
 #include <array>
 
@@ -74,10 +75,10 @@ namespace VPContact
   {
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     check_same_scalar_elements(fe, max_nodes);
-    const FiniteElement<dim> &scalar = fe.base_element(0);
-    n_q_points                       = quadrature.size();
-    n_nodes                          = scalar.n_dofs_per_cell();
-    dofs_per_cell                    = fe.n_dofs_per_cell();
+    scalar        = fe.base_element(0).clone();
+    n_q_points    = quadrature.size();
+    n_nodes       = scalar->n_dofs_per_cell();
+    dofs_per_cell = fe.n_dofs_per_cell();
     node_of.resize(dofs_per_cell);
     component_of.resize(dofs_per_cell);
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
@@ -85,7 +86,7 @@ namespace VPContact
         component_of[i] = fe.system_to_component_index(i).first;
         node_of[i]      = fe.system_to_component_index(i).second;
       }
-    shape_values = scalar_shape_values(scalar, quadrature);
+    shape_values = scalar_shape_values(*scalar, quadrature);
 
     const unsigned int n_cells
       = dof_handler.get_triangulation().n_active_cells();
@@ -97,7 +98,9 @@ namespace VPContact
 
     // The scalar element on the cells of the triangulation: only the
     // geometry is asked for, so no DoFHandler of its own is needed.
-    FEValues<dim>                        fe_values(scalar,
+    FEValues<dim>                        fe_values(get_default_linear_mapping(
+                              dof_handler.get_triangulation()),
+                            *scalar,
                             quadrature,
                             update_gradients | update_quadrature_points);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);

@@ -68,8 +68,8 @@ namespace VPContact
   template <int dim>
   unsigned int
   ConvergenceStudy<dim>::start_cycle(
-    const unsigned int                               cycle,
-    const parallel::distributed::Triangulation<dim> &triangulation)
+    const unsigned int                      cycle,
+    const parallel::TriangulationBase<dim> &triangulation)
   {
     current_cycle  = cycle;
     const double h = equivalent_mesh_size(triangulation);
@@ -122,9 +122,9 @@ namespace VPContact
   template <int dim>
   void
   ConvergenceStudy<dim>::refine(
-    parallel::distributed::Triangulation<dim> &triangulation,
-    const Vector<float>                       &indicators,
-    const std::set<types::boundary_id>        &contact_boundary_ids)
+    parallel::TriangulationBase<dim>   &triangulation,
+    const Vector<float>                &indicators,
+    const std::set<types::boundary_id> &contact_boundary_ids)
   {
     mesh_refinement.refine(triangulation, indicators, contact_boundary_ids);
   }
@@ -201,13 +201,13 @@ namespace VPContact
   template <int dim>
   void
   ConvergenceStudy<dim>::finish_cycle(
-    const parallel::distributed::Triangulation<dim> &triangulation,
-    const types::global_dof_index                    n_dofs,
-    const TimeDiscretization                        &time,
-    const ErrorEstimator<dim>                       &estimator,
-    const double                                     wall_time,
-    const std::string                               &base_directory,
-    const MPI_Comm                                   communicator)
+    const parallel::TriangulationBase<dim> &triangulation,
+    const types::global_dof_index           n_dofs,
+    const TimeDiscretization               &time,
+    const ErrorEstimator<dim>              &estimator,
+    const double                            wall_time,
+    const std::string                      &base_directory,
+    const MPI_Comm                          communicator)
   {
     ConvergenceTable::Row row;
     row.cycle     = current_cycle;

@@ -3,6 +3,7 @@
 // M_L/k + kappa A (once per mesh) and the load of every step (its solve is
 // in damage_problem_solve.cc).
 #include <vpcontact/damage_problem.h>
+#include <vpcontact/discretization.h>
 #include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
 
@@ -22,7 +23,7 @@ namespace VPContact
   {
     // The element matrix M_L/k + kappa A of the damage problem on one cell,
     // on its damage shape functions @p shape: the mass with the
-    // Gauss-Lobatto rule (lumped), the diffusion with the Gauss rule.
+    // vertex rule (lumped), the diffusion with the rule of the stress history.
     template <int dim>
     void
     damage_cell_matrix(const FEValues<dim>             &fe_values,
@@ -72,8 +73,8 @@ namespace VPContact
 
 
     // The element load M_L zeta_{n-1}/k + (phi_{n-1}, psi) of one cell. The
-    // lumped mass term is the cell's Gauss-Lobatto mass @p cell_mass of each
-    // node times its zeta_{n-1} (@p old_nodal): at the Gauss-Lobatto points
+    // lumped mass term is the cell's vertex-rule mass @p cell_mass of each
+    // node times its zeta_{n-1} (@p old_nodal): at the vertices
     // psi_a(x_b) = delta_ab, so the rule collapses to one term per node. The
     // source is stored at the Gauss points by the assembly of the
     // displacement step, integrated with the shape values @p psi_gauss of
@@ -150,9 +151,11 @@ namespace VPContact
     last_iterations   = 0;
     last_clip         = 0;
     largest_violation = 0;
-    model.check_diffusion_length(GridTools::minimal_cell_diameter(
-                                   dof_handler->get_triangulation()),
-                                 time.step_size());
+    model.check_diffusion_length(
+      GridTools::minimal_cell_diameter(dof_handler->get_triangulation(),
+                                       get_default_linear_mapping(
+                                         dof_handler->get_triangulation())),
+      time.step_size());
     system.reinit(*dof_handler,
                   dim,
                   locally_owned_dofs,
@@ -202,14 +205,17 @@ namespace VPContact
   DamageProblem<dim>::setup_mass_and_bounds()
   {
     // The lumped mass m_i = int psi_i: the mass matrix integrated with the
-    // Gauss-Lobatto (trapezoidal) rule, which is diagonal for Q1. On
+    // vertex (trapezoidal) rule, which is diagonal for Q1 and P1. On
     // adaptive meshes it is condensed like the load: a hanging node hands
     // its mass to the nodes it depends on, and carries no bound itself (its
     // value is an average of theirs, within [0, 1] when theirs are).
-    const auto              &constraints = system.hanging_node_constraints();
-    const auto              &shape       = system.shape_functions();
-    const QGaussLobatto<dim> lobatto(2);
-    FEValues<dim>            fe_values(dof_handler->get_fe(),
+    const auto           &constraints = system.hanging_node_constraints();
+    const auto           &shape       = system.shape_functions();
+    const Quadrature<dim> lobatto
+      = vertex_quadrature<dim>(dof_handler->get_fe().reference_cell());
+    FEValues<dim>                        fe_values(get_default_linear_mapping(
+                              dof_handler->get_triangulation()),
+                            dof_handler->get_fe(),
                             lobatto,
                             update_values | update_JxW_values);
     std::vector<types::global_dof_index> dof_indices;
@@ -335,19 +341,24 @@ namespace VPContact
   DamageProblem<dim>::assemble_matrix()
   {
     TimerOutput::Scope t(timer, "Damage assembly");
-    // K = M_L/k + kappa A: the lumped mass M_L (Gauss-Lobatto points, where
+    // K = M_L/k + kappa A: the lumped mass M_L (vertex rule, where
     // psi_i psi_j vanishes for i != j) and the diffusion, condensed on
     // hanging nodes only: the bounds are imposed by the solver.
-    const auto              &shape       = system.shape_functions();
-    const auto              &constraints = system.hanging_node_constraints();
-    const QGaussLobatto<dim> lobatto(2);
-    FEValues<dim>            fe_values(dof_handler->get_fe(),
+    const auto           &shape       = system.shape_functions();
+    const auto           &constraints = system.hanging_node_constraints();
+    const Quadrature<dim> lobatto
+      = vertex_quadrature<dim>(dof_handler->get_fe().reference_cell());
+    const Mapping<dim> &mapping
+      = get_default_linear_mapping(dof_handler->get_triangulation());
+    FEValues<dim>      fe_values(mapping,
+                            dof_handler->get_fe(),
                             *quadrature,
                             update_gradients | update_JxW_values);
-    FEValues<dim>            lobatto_values(dof_handler->get_fe(),
+    FEValues<dim>      lobatto_values(mapping,
+                                 dof_handler->get_fe(),
                                  lobatto,
                                  update_values | update_JxW_values);
-    FullMatrix<double>       cell_matrix(shape.size(), shape.size());
+    FullMatrix<double> cell_matrix(shape.size(), shape.size());
     std::vector<types::global_dof_index> dof_indices;
     system.matrix() = 0.;
     for (const auto &cell : dof_handler->active_cell_iterators())
@@ -379,7 +390,7 @@ namespace VPContact
     // b = M_L zeta_{n-1}/k + (phi_{n-1}, psi), with zeta_{n-1} from the
     // ghosted vector damage and the source stored at the Gauss points by
     // the displacement step's assembly. No FEValues: the shape values are
-    // those of the reference cell, the Gauss-Lobatto masses and the
+    // those of the reference cell, the vertex-rule masses and the
     // positions of the nodes in the ghosted vector are kept per cell (see
     // setup_mass_and_bounds()) and the JxW of the Gauss points with the
     // stress history. The cells whose nodes are all owned and not hanging

@@ -69,21 +69,21 @@ namespace VPContact
 
   template <int dim>
   void
-  ErrorEstimator<dim>::setup(
-    const parallel::distributed::Triangulation<dim> &tria,
-    const std::vector<cell_iterator>                &owned_cells,
-    const CellKinematics<dim>                       &cell_kinematics,
-    StressHistory<dim>                              &stress_history)
+  ErrorEstimator<dim>::setup(const parallel::TriangulationBase<dim> &tria,
+                             const std::vector<cell_iterator> &owned_cells,
+                             const CellKinematics<dim>        &cell_kinematics,
+                             StressHistory<dim>               &stress_history)
   {
-    // A scalar Q1 space on the mesh; its owned and ghost nodes hold the
+    // A scalar Q1 (P1) space on the mesh; its owned and ghost nodes hold the
     // recovered fields, one block per component.
     triangulation = &tria;
     cells         = &owned_cells;
     kinematics    = &cell_kinematics;
     history       = &stress_history;
     with_damage   = cell_kinematics.has_damage();
+    recovery_fe   = cell_kinematics.scalar_element().clone();
     recovery_dofs.reinit(tria);
-    recovery_dofs.distribute_dofs(recovery_fe);
+    recovery_dofs.distribute_dofs(*recovery_fe);
     const IndexSet owned = recovery_dofs.locally_owned_dofs();
     IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(recovery_dofs, relevant);
@@ -119,7 +119,7 @@ namespace VPContact
     // The nodes of every owned cell, by global index, and the lumped mass
     // sum_K int_K phi_i (condensed onto the nodes that carry the values
     // where the mesh has hanging nodes).
-    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    const unsigned int n_nodes = recovery_fe->n_dofs_per_cell();
     node_indices.resize((*cells).size() * n_nodes);
     node_locals.resize((*cells).size() * n_nodes);
     has_constraints.assign((*cells).size(), false);
@@ -195,7 +195,7 @@ namespace VPContact
     const auto         points  = history->get_data(cell);
     const auto         JxW     = history->JxW(cell);
     const unsigned int n_q     = JxW.size();
-    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    const unsigned int n_nodes = recovery_fe->n_dofs_per_cell();
     PointValues        values;
     evaluate_points(i, entries, values);
     const auto &strains   = values.strains;
@@ -231,7 +231,7 @@ namespace VPContact
     recovered = 0;
     // The cells' integrals in the threads, each into its own slice of
     // moments, then added into the nodes in the cells' order.
-    const unsigned int  n_nodes  = recovery_fe.n_dofs_per_cell();
+    const unsigned int  n_nodes  = recovery_fe->n_dofs_per_cell();
     const unsigned int  n_blocks = recovered.n_blocks();
     std::vector<double> moments(cells->size() * n_blocks * n_nodes);
     parallel::apply_to_subranges(
@@ -293,7 +293,7 @@ namespace VPContact
                                         Tensor<1, dim>          &gradient) const
   {
     // The recovered fields at point q of cell i: sum_a N_a(x_q) v_a.
-    const unsigned int n_nodes = recovery_fe.n_dofs_per_cell();
+    const unsigned int n_nodes = recovery_fe->n_dofs_per_cell();
     for (unsigned int a = 0; a < n_nodes; ++a)
       {
         const auto   node = node_locals[i * n_nodes + a];

@@ -34,8 +34,13 @@ namespace VPContact
       // owners.
       TrilinosWrappers::MPI::Vector lengths;
       lengths.reinit(owned_dofs, locally_relevant_dofs, communicator, true);
-      const QGauss<dim - 1>                face_quadrature(2);
-      FEFaceValues<dim>                    fe_face_values(fe,
+      const Quadrature<dim - 1> face_quadrature
+        = fe.reference_cell()
+            .face_reference_cell(0)
+            .template get_gauss_type_quadrature<dim - 1>(2);
+      FEFaceValues<dim> fe_face_values(get_default_linear_mapping(
+                                         dof_handler.get_triangulation()),
+                                       fe,
                                        face_quadrature,
                                        update_values | update_JxW_values);
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());

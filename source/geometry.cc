@@ -10,6 +10,7 @@
 #include <deal.II/grid/grid_in.h>
 
 #include <boost/crc.hpp>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -44,6 +45,18 @@ namespace VPContact
                         "subdivisions below, with boundary ids 0 = left "
                         "(x = x0), 1 = right, 2 = bottom, 3 = top (4 = front, "
                         "5 = back in 3D). 'file': the mesh in 'Mesh file'.");
+      prm.declare_entry(
+        "Cell type",
+        "quadrilateral",
+        Patterns::Selection("quadrilateral|simplex"),
+        "The cells and elements: 'quadrilateral' (hexahedra in 3D) with Q1 "
+        "elements, or 'simplex': triangles (tetrahedra) with the paper's P1 "
+        "elements, the box's cells split into 2 triangles (5 tetrahedra). A "
+        "mesh file's cells are recognised from the file: triangles there "
+        "need no entry, and 'simplex' with a file of quadrilaterals is "
+        "refused. Simplex meshes are held whole on every rank, partitioned "
+        "by METIS, refined only uniformly, and not checkpointed "
+        "(doc/simplex.md).");
       prm.declare_entry("Lower corner",
                         repeated("0", dim),
                         Patterns::List(Patterns::Double(), dim, dim),
@@ -119,7 +132,34 @@ namespace VPContact
       }
     n_global_refinements = prm.get_integer("Global refinements");
     n_finest_refinements = n_global_refinements;
+    simplex              = (prm.get("Cell type") == "simplex");
     prm.leave_subsection();
+    if (shape == Shape::file)
+      {
+        // The file decides the cell type; it is read once here for it.
+        Triangulation<dim> coarse;
+        read_mesh_file(coarse);
+        const bool file_simplex
+          = coarse.begin_active()->reference_cell().is_simplex();
+        VPContactCheckParameter(file_simplex || !simplex,
+                                "Geometry/Cell type",
+                                "simplex",
+                                "the mesh file " + mesh_file_as_given
+                                  + " has quadrilaterals (hexahedra); a "
+                                    "file's cells decide the element. Remove "
+                                    "the entry, or mesh the body with "
+                                    "triangles (tetrahedra).");
+        simplex = file_simplex;
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  Geometry<dim>::simplex_cells() const
+  {
+    return simplex;
   }
 
 
@@ -127,7 +167,7 @@ namespace VPContact
   template <int dim>
   void
   Geometry<dim>::create_mesh(
-    parallel::distributed::Triangulation<dim> &triangulation) const
+    parallel::TriangulationBase<dim> &triangulation) const
   {
     create_coarse_mesh(triangulation);
     triangulation.refine_global(n_global_refinements);
@@ -138,7 +178,7 @@ namespace VPContact
   template <int dim>
   void
   Geometry<dim>::create_coarse_mesh(
-    parallel::distributed::Triangulation<dim> &triangulation) const
+    parallel::TriangulationBase<dim> &triangulation) const
   {
     const std::string refinements = " and Geometry/Global refinements = "
                                     + std::to_string(n_global_refinements);
@@ -158,11 +198,14 @@ namespace VPContact
                           n_finest_refinements,
                           "Geometry/Subdivisions = " + list + refinements,
                           triangulation.get_communicator());
-        GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                  subdivisions,
-                                                  lower_corner,
-                                                  upper_corner,
-                                                  true);
+        if (simplex)
+          create_simplex_box(triangulation);
+        else
+          GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                    subdivisions,
+                                                    lower_corner,
+                                                    upper_corner,
+                                                    true);
       }
     else
       {
@@ -180,6 +223,34 @@ namespace VPContact
                           triangulation.get_communicator());
         triangulation.copy_triangulation(coarse);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::create_simplex_box(Triangulation<dim> &triangulation) const
+  {
+    // deal.II 9.4 does not colour a box of simplices: the boundary ids of
+    // the box of quadrilaterals are set here from the faces' centres.
+    Triangulation<dim> coarse;
+    GridGenerator::subdivided_hyper_rectangle_with_simplices(coarse,
+                                                             subdivisions,
+                                                             lower_corner,
+                                                             upper_corner,
+                                                             false);
+    for (const auto &face : coarse.active_face_iterators())
+      if (face->at_boundary())
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double tolerance
+              = 1e-10 * (upper_corner[d] - lower_corner[d]);
+            if (std::abs(face->center()[d] - lower_corner[d]) < tolerance)
+              face->set_boundary_id(2 * d);
+            else if (std::abs(face->center()[d] - upper_corner[d]) < tolerance)
+              face->set_boundary_id(2 * d + 1);
+          }
+    triangulation.copy_triangulation(coarse);
   }
 
 
@@ -281,7 +352,7 @@ namespace VPContact
   template <int dim>
   std::set<types::boundary_id>
   Geometry<dim>::boundary_ids_of(
-    const parallel::distributed::Triangulation<dim> &triangulation)
+    const parallel::TriangulationBase<dim> &triangulation)
   {
     std::vector<types::boundary_id> local;
     for (const auto &cell : triangulation.active_cell_iterators())

@@ -5,8 +5,9 @@
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/fe/mapping.h>
 
 #include <algorithm>
 #include <cmath>
@@ -41,11 +42,12 @@ namespace VPContact
     // the weights do not matter.
     template <int dim>
     Quadrature<dim>
-    jacobian_check_points()
+    jacobian_check_points(const ReferenceCell &cell)
     {
-      std::vector<Point<dim>> points = QGauss<dim>(2).get_points();
-      for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
-        points.push_back(GeometryInfo<dim>::unit_cell_vertex(v));
+      std::vector<Point<dim>> points
+        = cell.get_gauss_type_quadrature<dim>(2).get_points();
+      for (const unsigned int v : cell.vertex_indices())
+        points.push_back(cell.vertex<dim>(v));
       return Quadrature<dim>(points, std::vector<double>(points.size(), 1.));
     }
 
@@ -94,11 +96,34 @@ namespace VPContact
           normal[0]              = -t[1];
           normal[1]              = t[0];
         }
+      else if (face->n_vertices() == 3)
+        normal = cross_product_3d(face->vertex(1) - face->vertex(0),
+                                  face->vertex(2) - face->vertex(0));
       else
         normal = cross_product_3d(face->vertex(3) - face->vertex(0),
                                   face->vertex(2) - face->vertex(1));
       normal /= normal.norm();
       return normal;
+    }
+
+    // Whether @p p, a point of the plane of the triangle @p face, lies in the
+    // triangle (to @p tolerance): its barycentric coordinates are all
+    // non-negative.
+    template <int dim>
+    bool
+    in_triangle(const typename Triangulation<dim>::face_iterator &face,
+                const Point<dim>                                 &p,
+                const double                                      tolerance)
+    {
+      const Tensor<1, dim> a  = face->vertex(1) - face->vertex(0);
+      const Tensor<1, dim> b  = face->vertex(2) - face->vertex(0);
+      const Tensor<1, dim> x  = p - face->vertex(0);
+      const double         aa = a * a, ab = a * b, bb = b * b;
+      const double         det      = aa * bb - ab * ab;
+      const double         s        = (bb * (x * a) - ab * (x * b)) / det;
+      const double         t        = (aa * (x * b) - ab * (x * a)) / det;
+      const double         relative = tolerance / face->diameter();
+      return s > -relative && t > -relative && s + t < 1 + relative;
     }
 
     // Throw if a vertex of the mesh lies inside a boundary face of another
@@ -142,6 +167,9 @@ namespace VPContact
                 for (unsigned int d = 0; d < dim; ++d)
                   inside = inside && p[d] > lower[d] - tolerance
                            && p[d] < upper[d] + tolerance;
+                // A triangle covers only half of its bounding box.
+                if (inside && face->n_vertices() == 3)
+                  inside = in_triangle<dim>(face, p, tolerance);
                 AssertThrow(
                   !inside || std::abs((p - centre) * normal) > tolerance,
                   ExcMessage(
@@ -176,29 +204,32 @@ namespace VPContact
                 ExcMessage(source + ": the mesh has no cells of dimension "
                            + std::to_string(dim)
                            + ". Check the file and Dimension."));
+    // One kind of cell: quadrilaterals (hexahedra) or triangles
+    // (tetrahedra). Prisms, pyramids and mixed meshes have no element here.
+    const ReferenceCell kind = triangulation.begin_active()->reference_cell();
     for (const auto &cell : triangulation.active_cell_iterators())
-      AssertThrow(cell->reference_cell().is_hyper_cube(),
-                  ExcMessage(source + ": the mesh has "
-                             + (dim == 2 ? "triangles" :
-                                           "tetrahedra, prisms "
-                                           "or pyramids")
-                             + " (the first at " + vertices_of<dim>(cell)
-                             + "); this program computes on "
-                             + (dim == 2 ? "quadrilaterals" : "hexahedra")
-                             + ". Mesh the body with "
-                             + (dim == 2 ? "quadrilaterals" : "hexahedra")
-                             + " (in Gmsh: Mesh.RecombineAll = 1, or "
-                               "Mesh.SubdivisionAlgorithm = "
-                             + (dim == 2 ? "1" : "2") + ")."));
+      AssertThrow(cell->reference_cell() == kind
+                    && (kind.is_hyper_cube() || kind.is_simplex()),
+                  ExcMessage(
+                    source + ": the mesh has cells of more than one kind, or "
+                    + "prisms or pyramids (the first at "
+                    + vertices_of<dim>(cell) + "); this program computes on "
+                    + (dim == 2 ? "quadrilaterals or on triangles" :
+                                  "hexahedra or on tetrahedra")
+                    + ", one kind per mesh. Mesh the body with one kind (in "
+                      "Gmsh: Mesh.RecombineAll = 1 for quadrilaterals)."));
 
-    const FE_Q<dim> fe(1);
     check_conforming(triangulation, source);
 
-    // FEValues keeps references to the mapping and the element.
-    const MappingQ1<dim> mapping;
-    FEValues<dim>        fe_values(mapping,
-                            fe,
-                            jacobian_check_points<dim>(),
+    // The linear mapping of the cell kind; the element only serves FEValues
+    // (which keeps a reference to it).
+    const std::unique_ptr<FiniteElement<dim>> fe
+      = kind.is_simplex() ?
+          std::unique_ptr<FiniteElement<dim>>(new FE_SimplexP<dim>(1)) :
+          std::unique_ptr<FiniteElement<dim>>(new FE_Q<dim>(1));
+    FEValues<dim> fe_values(get_default_linear_mapping(triangulation),
+                            *fe,
+                            jacobian_check_points<dim>(kind),
                             update_jacobians);
     for (const auto &cell : triangulation.active_cell_iterators())
       {

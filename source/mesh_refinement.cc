@@ -218,9 +218,9 @@ namespace VPContact
   template <int dim>
   void
   MeshRefinement<dim>::refine(
-    parallel::distributed::Triangulation<dim> &triangulation,
-    const Vector<float>                       &indicators,
-    const std::set<types::boundary_id>        &uniform_boundary_ids) const
+    parallel::TriangulationBase<dim>   &triangulation,
+    const Vector<float>                &indicators,
+    const std::set<types::boundary_id> &uniform_boundary_ids) const
   {
     if (refinement == Strategy::uniform)
       {
@@ -271,18 +271,26 @@ namespace VPContact
   template <int dim>
   void
   MeshRefinement<dim>::flag_adaptively(
-    parallel::distributed::Triangulation<dim> &triangulation,
-    const Vector<float>                       &indicators) const
+    parallel::TriangulationBase<dim> &triangulation,
+    const Vector<float>              &indicators) const
   {
+    // The simulator refuses adaptive cycles on simplex meshes before the
+    // first step; this is the last line of defence.
+    auto *const distributed
+      = dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+        &triangulation);
+    AssertThrow(distributed != nullptr,
+                ExcMessage("Mesh refinement/Strategy = adaptive needs a mesh "
+                           "of quadrilaterals (hexahedra)."));
     if (fixed_fraction)
       parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
-        triangulation,
+        *distributed,
         indicators,
         refine_fraction,
         coarsen_fraction);
     else
       parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-        triangulation,
+        *distributed,
         indicators,
         refine_fraction,
         coarsen_fraction);
@@ -321,7 +329,7 @@ namespace VPContact
 
   template <int dim>
   double
-  equivalent_mesh_size(const parallel::distributed::Triangulation<dim> &tria)
+  equivalent_mesh_size(const parallel::TriangulationBase<dim> &tria)
   {
     double volume = 0;
     for (const auto &cell : tria.active_cell_iterators())
@@ -336,7 +344,7 @@ namespace VPContact
   template class MeshRefinement<2>;
   template class MeshRefinement<3>;
   template double
-  equivalent_mesh_size(const parallel::distributed::Triangulation<2> &);
+  equivalent_mesh_size(const parallel::TriangulationBase<2> &);
   template double
-  equivalent_mesh_size(const parallel::distributed::Triangulation<3> &);
+  equivalent_mesh_size(const parallel::TriangulationBase<3> &);
 } // namespace VPContact

@@ -7,7 +7,7 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
@@ -81,7 +81,8 @@ namespace VPContact
     communicator = dof_handler.get_communicator();
     locations.clear();
     n_evaluations.assign(points.size(), 0);
-    const MappingQ1<dim> mapping;
+    const Mapping<dim> &mapping
+      = get_default_linear_mapping(dof_handler.get_triangulation());
     for (unsigned int i = 0; i < points.size(); ++i)
       {
         // The first locally owned cell around the point, if any: a point on
@@ -94,7 +95,11 @@ namespace VPContact
           if (cell->is_locally_owned())
             {
               locations.push_back(
-                {i, cell, GeometryInfo<dim>::project_to_unit_cell(unit_point)});
+                {i,
+                 cell,
+                 cell->reference_cell().is_hyper_cube() ?
+                   GeometryInfo<dim>::project_to_unit_cell(unit_point) :
+                   unit_point});
               n_evaluations[i] = 1;
               break;
             }
@@ -123,10 +128,11 @@ namespace VPContact
   {
     if (points.empty())
       return;
-    std::vector<double>  values(points.size() * dim, 0.);
-    const MappingQ1<dim> mapping;
+    std::vector<double> values(points.size() * dim, 0.);
     for (const auto &location : locations)
       {
+        const Mapping<dim> &mapping
+          = get_default_linear_mapping(location.cell->get_triangulation());
         const auto   &fe = location.cell->get_fe();
         FEValues<dim> fe_values(mapping,
                                 fe,

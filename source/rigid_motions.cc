@@ -3,7 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe.h>
-#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <limits>
@@ -53,7 +53,8 @@ namespace VPContact
     {
       const MPI_Comm            communicator = dof_handler.get_communicator();
       const FiniteElement<dim> &fe           = dof_handler.get_fe();
-      const MappingQ1<dim>      mapping;
+      const Mapping<dim>       &mapping
+        = get_default_linear_mapping(dof_handler.get_triangulation());
       const std::vector<Point<dim>>       &unit = fe.get_unit_support_points();
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>>

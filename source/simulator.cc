@@ -6,7 +6,6 @@
 
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
 
 #include <cmath>
 
@@ -14,19 +13,26 @@ namespace VPContact
 {
   namespace
   {
-    // The finite element: Q1 displacement, plus a Q1 damage component when
-    // the scene has damage (read here because the element is built before
-    // the modules parse their sections).
-    template <int dim>
-    FESystem<dim>
-    make_finite_element(ParameterHandler &prm)
+    // Whether the scene has damage: read here because the element is built
+    // before the modules parse their sections.
+    bool
+    with_damage(ParameterHandler &prm)
     {
       prm.enter_subsection("Damage");
-      const bool with_damage = (prm.get("Model") != "none");
+      const bool damage = (prm.get("Model") != "none");
       prm.leave_subsection();
-      if (with_damage)
-        return FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1);
-      return FESystem<dim>(FE_Q<dim>(1), dim);
+      return damage;
+    }
+
+    // The section "Geometry", parsed first: its cell type chooses the
+    // element and the triangulation.
+    template <int dim>
+    Geometry<dim>
+    parsed_geometry(ParameterHandler &prm, const std::string &directory)
+    {
+      Geometry<dim> geometry;
+      geometry.parse_parameters(prm, directory);
+      return geometry;
     }
   } // namespace
 
@@ -71,18 +77,15 @@ namespace VPContact
     // view, and an input error thrown while the simulator is built does not
     // trigger TimerOutput's collective clean-up in its destructor.
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    // Smoothing keeps one level of difference at vertices and fills
-    // unrefined islands; it does not undo a refinement flag on a cell whose
-    // neighbours stay coarse (smoothing_on_coarsening would, and a single
-    // cell at a singular corner is what the indicators flag first).
-    , triangulation(communicator,
-                    typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement))
-    , fe(make_finite_element<dim>(prm))
-    , quadrature(2)
+    , geometry(parsed_geometry<dim>(prm, parameter_directory))
+    , discretization(geometry.simplex_cells(), with_damage(prm))
+    , mesh(discretization.make_triangulation(communicator))
+    , triangulation(*mesh)
+    , fe(discretization.finite_element())
+    , quadrature(discretization.quadrature())
+    , mapping(discretization.mapping())
     , dof_handler(triangulation)
   {
-    geometry.parse_parameters(prm, parameter_directory);
     material.parse_parameters(prm);
     viscoplasticity.parse_parameters(prm);
     viscoplastic_law = viscoplasticity.create_law(prm);
@@ -133,6 +136,7 @@ namespace VPContact
                    "and Resume from checkpoint = false, or run the mesh of "
                    "one cycle as a single run."));
     check_stability_limits();
+    check_simplex_support();
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first < dim)
         displacement.shape_functions.push_back(i);
@@ -179,13 +183,54 @@ namespace VPContact
 
   template <int dim>
   void
+  Simulator<dim>::check_simplex_support() const
+  {
+    // What a mesh of triangles (tetrahedra) cannot do, refused before the
+    // first step: deal.II 9.4 refines simplices only uniformly, the
+    // reference snapshots interpolate Q1 fields, and checkpoints are
+    // p4est's, which holds only quadrilaterals (hexahedra).
+    if (!discretization.simplex())
+      return;
+    const std::string cells = (dim == 2 ? "triangles" : "tetrahedra");
+    const std::string other = (dim == 2 ? "quadrilaterals" : "hexahedra");
+    VPContactCheckParameter(
+      !convergence_study.refinement().needs_indicators(),
+      "Mesh refinement/Strategy",
+      "adaptive",
+      "adaptive cycles need hanging nodes, which deal.II 9.4 does not make "
+      "on "
+        + cells + ". Use Strategy = uniform, or a mesh of " + other + ".");
+    const auto &reference = convergence_study.reference();
+    VPContactCheckParameter(
+      !reference.writes_snapshots() && !reference.compares(),
+      reference.writes_snapshots() ? "Reference solution/Write snapshots" :
+                                     "Reference solution/Compare with",
+      reference.writes_snapshots() ? "true" : "(a folder)",
+      "snapshots hold Q1 fields on " + other + "; on " + cells
+        + " compare runs through Output/Monitor points and statistics.csv.");
+    VPContactCheckParameter(
+      !checkpointing.writes_periodically() && !checkpointing.resume(),
+      checkpointing.resume() ? "Checkpoint/Resume from checkpoint" :
+                               "Checkpoint/Every steps (or Every seconds)",
+      checkpointing.resume() ? "true" : "> 0",
+      "checkpoints are written by p4est, which holds only " + other
+        + ". Set Checkpoint/Every steps = 0, Every seconds = 0 and Resume "
+          "from checkpoint = false on a mesh of "
+        + cells + ".");
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::run()
   {
     // Everything that can be wrong with the input is checked before the
     // first solve: parameters (in the constructor), the output folder, the
     // mesh and its boundary ids, the reference compared with.
     output_writer.prepare_directory(mpi_communicator);
-    checkpointing.check_folders(output_writer.directory(), mpi_communicator);
+    if (!discretization.simplex())
+      checkpointing.check_folders(output_writer.directory(), mpi_communicator);
     make_mesh();
     convergence_study.prepare();
     for (unsigned int cycle = 0; cycle < convergence_study.n_cycles(); ++cycle)
@@ -269,7 +314,8 @@ namespace VPContact
     // step, with a checkpoint (runs with cycles are not checkpointed).
     // Returns whether the run stopped so.
     const auto signal_catcher
-      = (checkpointing.stops_on_signal() && convergence_study.n_cycles() == 1 ?
+      = (checkpointing.stops_on_signal() && convergence_study.n_cycles() == 1
+             && !discretization.simplex() ?
            std::make_unique<StopSignalCatcher>() :
            nullptr);
     try

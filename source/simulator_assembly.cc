@@ -55,7 +55,8 @@ namespace VPContact
     // k, since the unknown is the increment k w. It does not change while
     // the mesh is fixed, except where friction changes it: the stick nodes'
     // constraints and, in 3D, the slip nodes' stiffness.
-    FEValues<dim>                        fe_values(fe,
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
                             quadrature,
                             update_gradients | update_JxW_values);
     FullMatrix<double>                   cell_matrix;
@@ -171,7 +172,10 @@ namespace VPContact
                                                  copy.dof_indices,
                                                  displacement.rhs);
       },
-      AssemblyScratch(fe, quadrature),
+      AssemblyScratch(mapping,
+                      fe,
+                      quadrature,
+                      discretization.face_quadrature()),
       CellRhs(displacement.shape_functions.size()));
     displacement.rhs.compress(VectorOperation::add);
   }
@@ -280,7 +284,10 @@ namespace VPContact
     // assemble_rhs(). Only those entries are read, so only @p cells, those
     // with a contact node, are visited: the other entries of r are
     // incomplete. The caller compresses @p residual.
-    AssemblyScratch                  scratch(fe, quadrature);
+    AssemblyScratch                  scratch(mapping,
+                            fe,
+                            quadrature,
+                            discretization.face_quadrature());
     FEValues<dim>                   &fe_values      = scratch.fe_values;
     FEFaceValues<dim>               &fe_face_values = scratch.fe_face_values;
     const FEValuesExtractors::Vector u(0);

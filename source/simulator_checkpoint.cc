@@ -4,6 +4,8 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 
+#include <deal.II/distributed/tria.h>
+
 #include <array>
 
 namespace VPContact
@@ -33,6 +35,21 @@ namespace VPContact
                              + " has no counter " + name
                              + " in its checkpoint.json."));
       return found->second;
+    }
+
+    // The p4est mesh that checkpoints save and load. Simplex meshes are not
+    // checkpointed (Simulator::check_simplex_support() says so first).
+    template <int dim>
+    parallel::distributed::Triangulation<dim> &
+    checkpointed_mesh(parallel::TriangulationBase<dim> &triangulation)
+    {
+      auto *const mesh
+        = dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+          &triangulation);
+      AssertThrow(mesh != nullptr,
+                  ExcMessage("Checkpoints need a mesh of quadrilaterals "
+                             "(hexahedra)."));
+      return *mesh;
     }
   } // namespace
 
@@ -86,7 +103,9 @@ namespace VPContact
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(
       metadata,
-      CheckpointFields::expected_sizes(triangulation, "mesh", bytes_per_cell),
+      CheckpointFields::expected_sizes(checkpointed_mesh(triangulation),
+                                       "mesh",
+                                       bytes_per_cell),
       mpi_communicator);
     pcout << "  checkpoint of step " << n << " written to "
           << checkpointing.folder() << std::endl;
@@ -133,7 +152,7 @@ namespace VPContact
     const std::vector<const TrilinosWrappers::MPI::Vector *> vectors
       = {&solution, &increments[0], &increments[1], &increments[2], &sets};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
-    CheckpointFields::save(triangulation,
+    CheckpointFields::save(checkpointed_mesh(triangulation),
                            dof_handler,
                            vectors,
                            stress_history,
@@ -204,7 +223,7 @@ namespace VPContact
                   + std::to_string(triangulation.n_global_coarse_cells())
                   + ": has the mesh file changed? Resume with the "
                     "mesh of the checkpointed run."));
-    triangulation.load(folder + "/mesh");
+    checkpointed_mesh(triangulation).load(folder + "/mesh");
     AssertThrow(triangulation.n_global_active_cells()
                   == resumed_checkpoint.n_active_cells,
                 ExcMessage("The mesh loaded from " + folder
@@ -281,7 +300,7 @@ namespace VPContact
          &increment_predictor.recorded(2),
          &sets_owned};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
-    CheckpointFields::load(triangulation,
+    CheckpointFields::load(checkpointed_mesh(triangulation),
                            dof_handler,
                            vectors,
                            stress_history,

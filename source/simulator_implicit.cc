@@ -86,7 +86,10 @@ namespace VPContact
     //   (C eps(delta), eps(v)) = (f_n, v) - (sigma(du), eps(v)).
     boundary_conditions.set_time(time);
     const double     k = time_discretization.step_size();
-    AssemblyScratch  scratch(fe, quadrature);
+    AssemblyScratch  scratch(mapping,
+                            fe,
+                            quadrature,
+                            discretization.face_quadrature());
     ImplicitCellData data(displacement.shape_functions.size(),
                           fe.n_dofs_per_cell(),
                           quadrature.size());

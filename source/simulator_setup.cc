@@ -5,7 +5,6 @@
 
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
@@ -206,9 +205,7 @@ namespace VPContact
     NearNullSpace space;
     space.dofs_per_node = dim;
     std::map<types::global_dof_index, Point<dim>> support_points;
-    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
-                                         dof_handler,
-                                         support_points);
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
     const Point<dim> centre
       = GridTools::compute_bounding_box(triangulation).center();
     const unsigned int n_modes = (dim == 2 ? 3 : 6);
@@ -252,7 +249,7 @@ namespace VPContact
     // shape gradients in cell_kinematics, once per mesh (see StressHistory
     // and CellKinematics).
     stress_history.clear();
-    FEValues<dim> fe_values(fe, quadrature, update_JxW_values);
+    FEValues<dim> fe_values(mapping, fe, quadrature, update_JxW_values);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {

@@ -99,9 +99,9 @@ namespace VPContact
   template <int dim>
   double
   TrescaFriction<dim>::check_bound(
-    const parallel::distributed::Triangulation<dim> &triangulation,
-    const std::set<types::boundary_id>              &contact_ids,
-    const std::vector<double>                       &times) const
+    const parallel::TriangulationBase<dim> &triangulation,
+    const std::set<types::boundary_id>     &contact_ids,
+    const std::vector<double>              &times) const
   {
     // The smallest value over the contact vertices of this rank and the
     // given times; then over all ranks, so that every rank decides alike.

@@ -234,13 +234,17 @@ namespace VPContact
     errors.max_nodal = nodal.linfty_norm();
 
     Vector<float> cellwise(dof_handler.get_triangulation().n_active_cells());
-    VectorTools::integrate_difference(dof_handler,
-                                      solution,
-                                      padded,
-                                      cellwise,
-                                      QGauss<dim>(3),
-                                      VectorTools::L2_norm,
-                                      &displacement_only);
+    VectorTools::integrate_difference(
+      get_default_linear_mapping(dof_handler.get_triangulation()),
+      dof_handler,
+      solution,
+      padded,
+      cellwise,
+      dof_handler.get_fe()
+        .reference_cell()
+        .template get_gauss_type_quadrature<dim>(3),
+      VectorTools::L2_norm,
+      &displacement_only);
     errors.l2
       = VectorTools::compute_global_error(dof_handler.get_triangulation(),
                                           cellwise,

@@ -69,6 +69,13 @@ namespace VPContact
       return n_nodes;
     }
 
+    /// The scalar element of every component (Q1 or P1).
+    const FiniteElement<dim> &
+    scalar_element() const
+    {
+      return *scalar;
+    }
+
     /// Whether the element has a damage component (component dim).
     bool
     has_damage() const;
@@ -140,6 +147,8 @@ namespace VPContact
     /// The most scalar shape functions per cell (Q2 in 3D).
     static constexpr unsigned int max_nodes = 27;
 
+    /// A copy of the scalar element.
+    std::unique_ptr<FiniteElement<dim>> scalar;
     /// The number of quadrature points and of scalar shape functions.
     unsigned int n_q_points = 0;
     unsigned int n_nodes    = 0;

@@ -48,6 +48,12 @@ namespace VPContact
 
     unsigned int
     n_cycles() const;
+    /// The section "Reference solution".
+    const ReferenceSolution &
+    reference() const
+    {
+      return reference_solution;
+    }
 
     /// Before the first cycle: read the reference's index, if compared.
     void
@@ -59,14 +65,14 @@ namespace VPContact
      * with h, see MeshRefinement).
      */
     unsigned int
-    start_cycle(const unsigned int                               cycle,
-                const parallel::distributed::Triangulation<dim> &triangulation);
+    start_cycle(const unsigned int                      cycle,
+                const parallel::TriangulationBase<dim> &triangulation);
 
     /// The next cycle's mesh from the cell @p indicators of this one.
     void
-    refine(parallel::distributed::Triangulation<dim> &triangulation,
-           const Vector<float>                       &indicators,
-           const std::set<types::boundary_id>        &contact_boundary_ids);
+    refine(parallel::TriangulationBase<dim>   &triangulation,
+           const Vector<float>                &indicators,
+           const std::set<types::boundary_id> &contact_boundary_ids);
 
     /**
      * After step @p n at @p time: write a snapshot for a later comparison
@@ -91,13 +97,13 @@ namespace VPContact
     /// @p estimator if it is active (also to convergence.csv in
     /// @p base_directory, by rank 0, with cycles or a reference).
     void
-    finish_cycle(const parallel::distributed::Triangulation<dim> &triangulation,
-                 const types::global_dof_index                    n_dofs,
-                 const TimeDiscretization                        &time,
-                 const ErrorEstimator<dim>                       &estimator,
-                 const double                                     wall_time,
-                 const std::string &base_directory,
-                 const MPI_Comm     communicator);
+    finish_cycle(const parallel::TriangulationBase<dim> &triangulation,
+                 const types::global_dof_index           n_dofs,
+                 const TimeDiscretization               &time,
+                 const ErrorEstimator<dim>              &estimator,
+                 const double                            wall_time,
+                 const std::string                      &base_directory,
+                 const MPI_Comm                          communicator);
 
     /// The table for the screen, with run times unless @p deterministic;
     /// empty for a single run without reference.

@@ -179,7 +179,7 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector residual;
     TrilinosWrappers::MPI::Vector lumped_mass;
     /// For each locally owned cell (by active cell index), per damage shape
-    /// function: its Gauss-Lobatto mass int_K psi_a, and the position of its
+    /// function: its vertex-rule mass int_K psi_a, and the position of its
     /// node in the local storage of the ghosted vector damage. Set once per
     /// mesh by setup_mass_and_bounds(), read by the load of every step,
     /// which then needs no FEValues and no index lookups.

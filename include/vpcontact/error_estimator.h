@@ -19,6 +19,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -89,10 +90,10 @@ namespace VPContact
      * must stay valid until the next setup().
      */
     void
-    setup(const parallel::distributed::Triangulation<dim> &triangulation,
-          const std::vector<cell_iterator>                &owned_cells,
-          const CellKinematics<dim>                       &kinematics,
-          StressHistory<dim>                              &history);
+    setup(const parallel::TriangulationBase<dim> &triangulation,
+          const std::vector<cell_iterator>       &owned_cells,
+          const CellKinematics<dim>              &kinematics,
+          StressHistory<dim>                     &history);
 
     /**
      * The estimate at t_n, for the step size @p k and the local entries
@@ -167,15 +168,16 @@ namespace VPContact
 
     bool active = true;
 
-    const parallel::distributed::Triangulation<dim> *triangulation = nullptr;
-    const std::vector<cell_iterator>                *cells         = nullptr;
-    const CellKinematics<dim>                       *kinematics    = nullptr;
-    StressHistory<dim>                              *history       = nullptr;
-    bool                                             with_damage   = false;
+    const parallel::TriangulationBase<dim> *triangulation = nullptr;
+    const std::vector<cell_iterator>       *cells         = nullptr;
+    const CellKinematics<dim>              *kinematics    = nullptr;
+    StressHistory<dim>                     *history       = nullptr;
+    bool                                    with_damage   = false;
 
-    FE_Q<dim>                 recovery_fe{1};
-    DoFHandler<dim>           recovery_dofs;
-    AffineConstraints<double> constraints;
+    /// Q1 or P1, the scalar element of the mesh's cells.
+    std::unique_ptr<FiniteElement<dim>> recovery_fe;
+    DoFHandler<dim>                     recovery_dofs;
+    AffineConstraints<double>           constraints;
     /// The recovered fields, one block per component: the stress, the
     /// strain (n_independent_components each) and, with damage, the damage
     /// gradient (dim).

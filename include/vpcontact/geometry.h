@@ -6,7 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
-#include <deal.II/distributed/tria.h>
+#include <deal.II/distributed/tria_base.h>
 
 #include <set>
 #include <string>
@@ -42,20 +42,24 @@ namespace VPContact
      * message that names the file when a mesh file is missing or unreadable.
      */
     void
-    create_mesh(parallel::distributed::Triangulation<dim> &triangulation) const;
+    create_mesh(parallel::TriangulationBase<dim> &triangulation) const;
 
     /**
      * Only the coarse mesh, without the global refinements: what
      * Triangulation::load() of a checkpoint starts from.
      */
     void
-    create_coarse_mesh(
-      parallel::distributed::Triangulation<dim> &triangulation) const;
+    create_coarse_mesh(parallel::TriangulationBase<dim> &triangulation) const;
 
     /// The CRC-32 of the mesh file in hex, or "" for a box (or a file
     /// that cannot be read; create_mesh() says so).
     std::string
     mesh_file_checksum() const;
+
+    /// Whether the cells are triangles (tetrahedra): Geometry/Cell type for
+    /// a box, the file's cells for a mesh file.
+    bool
+    simplex_cells() const;
 
     /// Geometry/Global refinements.
     unsigned int
@@ -73,10 +77,14 @@ namespace VPContact
      * The set of boundary ids that the mesh has, on all ranks together.
      */
     static std::set<types::boundary_id>
-    boundary_ids_of(
-      const parallel::distributed::Triangulation<dim> &triangulation);
+    boundary_ids_of(const parallel::TriangulationBase<dim> &triangulation);
 
   private:
+    /// The box of Cell type = simplex, with the boundary ids of the box of
+    /// quadrilaterals.
+    void
+    create_simplex_box(Triangulation<dim> &triangulation) const;
+
     /// Read the mesh file into @p coarse and check its cells.
     void
     read_mesh_file(Triangulation<dim> &coarse) const;
@@ -96,6 +104,7 @@ namespace VPContact
     std::string  mesh_file_as_given;
     unsigned int n_global_refinements = 0;
     unsigned int n_finest_refinements = 0;
+    bool         simplex              = false;
   };
 } // namespace VPContact
 

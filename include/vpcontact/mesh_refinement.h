@@ -84,8 +84,8 @@ namespace VPContact
      * Tresca conditions never meet a hanging node.
      */
     void
-    refine(parallel::distributed::Triangulation<dim> &triangulation,
-           const Vector<float>                       &indicators,
+    refine(parallel::TriangulationBase<dim>   &triangulation,
+           const Vector<float>                &indicators,
            const std::set<types::boundary_id> &uniform_boundary_ids) const;
 
     /// A one-line description for the screen.
@@ -94,8 +94,8 @@ namespace VPContact
 
   private:
     void
-    flag_adaptively(parallel::distributed::Triangulation<dim> &triangulation,
-                    const Vector<float> &indicators) const;
+    flag_adaptively(parallel::TriangulationBase<dim> &triangulation,
+                    const Vector<float>              &indicators) const;
 
     unsigned int cycles             = 1;
     Strategy     refinement         = Strategy::uniform;
@@ -111,7 +111,7 @@ namespace VPContact
   /// side of a uniform mesh of squares with as many cells.
   template <int dim>
   double
-  equivalent_mesh_size(const parallel::distributed::Triangulation<dim> &tria);
+  equivalent_mesh_size(const parallel::TriangulationBase<dim> &tria);
 } // namespace VPContact
 
 #endif

@@ -9,6 +9,7 @@
 #include <vpcontact/convergence_study.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/damage_problem.h>
+#include <vpcontact/discretization.h>
 #include <vpcontact/displacement_system.h>
 #include <vpcontact/elastic_material.h>
 #include <vpcontact/error_estimator.h>
@@ -69,13 +70,13 @@ namespace VPContact
    * ConvergenceStudy (refinement cycles, errors against a reference). The
    * displacement problem's linear system is a DisplacementSystem.
    *
-   * The unknowns are the displacement, Q1 in every component of one
-   * FESystem, and the stress at the quadrature points of the assembly rule.
-   * A step solves for the increment du = u_n - u_{n-1} = k w (the paper's
-   * velocity problem multiplied by k, so the matrix is E and does not depend
-   * on k):
-   *   (E eps(du), eps(v)) = (f_n, v) - (sigma_{n-1} + k G_{n-1}, eps(v)),
-   * then sets sigma_n = sigma_{n-1} + k G_{n-1} + E eps(du).
+   * The unknowns are the displacement, Q1 (P1 on simplices, see
+   * Discretization) in every component of one FESystem, and the stress at the
+   * quadrature points of the assembly rule. A step solves for the increment du
+   * = u_n - u_{n-1} = k w (the paper's velocity problem multiplied by k, so the
+   * matrix is E and does not depend on k): (E eps(du), eps(v)) = (f_n, v) -
+   * (sigma_{n-1} + k G_{n-1}, eps(v)), then sets sigma_n = sigma_{n-1} + k
+   * G_{n-1} + E eps(du).
    */
   template <int dim>
   class Simulator
@@ -118,14 +119,18 @@ namespace VPContact
      */
     struct AssemblyScratch
     {
-      AssemblyScratch(const FiniteElement<dim> &fe,
-                      const Quadrature<dim>    &quadrature)
-        : fe_values(fe,
+      AssemblyScratch(const Mapping<dim>        &mapping,
+                      const FiniteElement<dim>  &fe,
+                      const Quadrature<dim>     &quadrature,
+                      const Quadrature<dim - 1> &face_quadrature)
+        : fe_values(mapping,
+                    fe,
                     quadrature,
                     update_values | update_gradients | update_quadrature_points
                       | update_JxW_values)
-        , fe_face_values(fe,
-                         QGauss<dim - 1>(fe.degree + 1),
+        , fe_face_values(mapping,
+                         fe,
+                         face_quadrature,
                          update_values | update_quadrature_points
                            | update_JxW_values)
         , strains(quadrature.size())
@@ -133,8 +138,10 @@ namespace VPContact
         , damage_values(quadrature.size(), 1.)
       {}
       AssemblyScratch(const AssemblyScratch &scratch)
-        : AssemblyScratch(scratch.fe_values.get_fe(),
-                          scratch.fe_values.get_quadrature())
+        : AssemblyScratch(scratch.fe_values.get_mapping(),
+                          scratch.fe_values.get_fe(),
+                          scratch.fe_values.get_quadrature(),
+                          scratch.fe_face_values.get_quadrature())
       {}
       FEValues<dim>                        fe_values;
       FEFaceValues<dim>                    fe_face_values;
@@ -173,6 +180,8 @@ namespace VPContact
     estimate_error(const unsigned int n);
     void
     check_stability_limits() const;
+    void
+    check_simplex_support() const;
     void
     compute_initial_state();
     void
@@ -379,14 +388,21 @@ namespace VPContact
     /// The checkpoint a resumed run reads (found by load_checkpoint_mesh()).
     CheckpointMetadata resumed_checkpoint;
 
-    parallel::distributed::Triangulation<dim> triangulation;
-    /// Q1 displacement, and a Q1 damage component in damage scenes only.
-    const FESystem<dim> fe;
+    /// The element and rules of the mesh's cell type (Q1 or P1).
+    const Discretization<dim> discretization;
+    /// A p4est mesh of quadrilaterals (hexahedra), or a METIS-partitioned
+    /// shared mesh of triangles (tetrahedra).
+    const std::unique_ptr<parallel::TriangulationBase<dim>> mesh;
+    parallel::TriangulationBase<dim>                       &triangulation;
+    /// The displacement, and a damage component in damage scenes only.
+    const FESystem<dim> &fe;
     /// The rule of assembly, stress storage and stress output alike.
-    const QGauss<dim> quadrature;
-    DoFHandler<dim>   dof_handler;
-    IndexSet          locally_owned_dofs;
-    IndexSet          locally_relevant_dofs;
+    const Quadrature<dim> &quadrature;
+    /// The linear mapping of the cells (MappingQ1 or MappingFE).
+    const Mapping<dim> &mapping;
+    DoFHandler<dim>     dof_handler;
+    IndexSet            locally_owned_dofs;
+    IndexSet            locally_relevant_dofs;
     /// Constraints on the increment du of the current step.
     AffineConstraints<double> constraints;
 

@@ -83,9 +83,9 @@ namespace VPContact
      * @p times. Returns the largest g found there (0: frictionless).
      */
     double
-    check_bound(const parallel::distributed::Triangulation<dim> &triangulation,
-                const std::set<types::boundary_id>              &contact_ids,
-                const std::vector<double>                       &times) const;
+    check_bound(const parallel::TriangulationBase<dim> &triangulation,
+                const std::set<types::boundary_id>     &contact_ids,
+                const std::vector<double>              &times) const;
 
     /// g(x, t).
     double
