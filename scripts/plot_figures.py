@@ -31,13 +31,15 @@ def time_series(folder):
 
 
 def read(pvtu):
-    """Quads (n x 4 x 2 reference coordinates), point arrays by name."""
+    """Points, cells (n x 4 vertex indices of quadrilaterals or n x 3 of
+    triangles), point arrays by name."""
     reader = vtk.vtkXMLPUnstructuredGridReader()
     reader.SetFileName(pvtu)
     reader.Update()
     grid = reader.GetOutput()
     points = vtk_to_numpy(grid.GetPoints().GetData())[:, :2]
-    cells = vtk_to_numpy(grid.GetCells().GetData()).reshape(-1, 5)[:, 1:]
+    connectivity = vtk_to_numpy(grid.GetCells().GetData())
+    cells = connectivity.reshape(-1, connectivity[0] + 1)[:, 1:]
     data = grid.GetPointData()
     arrays = {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
               for i in range(data.GetNumberOfArrays())}
@@ -82,7 +84,7 @@ def histories(folder, out, scene):
     save(fig, os.path.join(out, f"{scene}_history.png"))
 
 
-def paper_figures(folder, out):
+def paper_figures(folder, out, scene="paper_fig1"):
     t, pvtu = time_series(folder)[-1]
     points, cells, arrays = read(pvtu)
     x = deformed(points, arrays)
@@ -99,7 +101,7 @@ def paper_figures(folder, out):
     ax.set_title(f"Deformed mesh at t = {t:g} s (true scale)")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
-    save(fig, os.path.join(out, "paper_fig1_deformed.png"))
+    save(fig, os.path.join(out, f"{scene}_deformed.png"))
 
     # Fig. 3: von Mises norm of the stress (cell averages) on the deformed body.
     fig, ax = plt.subplots(figsize=(6.4, 5))
@@ -111,19 +113,20 @@ def paper_figures(folder, out):
     ax.set_aspect("equal")
     ax.autoscale()
     ax.set_title(f"Von Mises stress norm at t = {t:g} s")
-    save(fig, os.path.join(out, "paper_fig1_von_mises.png"))
+    save(fig, os.path.join(out, f"{scene}_von_mises.png"))
 
-    # Fig. 4: damage field (Q1, nodal values) on the deformed body.
+    # Fig. 4: damage field (Q1 or P1, nodal values) on the deformed body.
     fig, ax = plt.subplots(figsize=(6.4, 5))
-    triangles = np.vstack([cells[:, [0, 1, 2]], cells[:, [0, 2, 3]]])
+    triangles = cells if cells.shape[1] == 3 else \
+        np.vstack([cells[:, [0, 1, 2]], cells[:, [0, 2, 3]]])
     shading = ax.tripcolor(x[:, 0], x[:, 1], triangles, arrays["damage"],
                            shading="gouraud", cmap="inferno", vmin=0, vmax=1)
     fig.colorbar(shading, ax=ax, label="damage $\\zeta$ (1 sound, 0 broken)")
     ax.set_aspect("equal")
     ax.set_title(f"Damage at t = {t:g} s")
-    save(fig, os.path.join(out, "paper_fig1_damage.png"))
+    save(fig, os.path.join(out, f"{scene}_damage.png"))
 
-    histories(folder, out, "paper_fig1")
+    histories(folder, out, scene)
 
 
 def slip_figures(folder, out, g=20.0):
@@ -241,6 +244,8 @@ if __name__ == "__main__":
     results, figures = sys.argv[1], sys.argv[2]
     os.makedirs(figures, exist_ok=True)
     paper_figures(os.path.join(results, "paper_fig1"), figures)
+    paper_figures(os.path.join(results, "paper_fig1_p1"), figures,
+                  "paper_fig1_p1")
     slip_figures(os.path.join(results, "paper_fig1_slip"), figures)
     slip3d_figures(os.path.join(results, "paper_fig1_3d_slip"), figures)
     paper3d_figures(os.path.join(results, "paper_fig1_3d"), figures)

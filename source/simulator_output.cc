@@ -183,8 +183,11 @@ namespace VPContact
                 "active set" :
                 "bilateral (u.nu = 0), frictionless (friction bound 0)")
           << '\n'
-          << "  mesh: " << triangulation.n_global_active_cells() << " cells, "
-          << dof_handler.n_dofs() << " dofs" << '\n'
+          << "  mesh: " << triangulation.n_global_active_cells() << " cells"
+          << (discretization.simplex() ?
+                " (" + discretization.description() + ")" :
+                std::string())
+          << ", " << dof_handler.n_dofs() << " dofs" << '\n'
           << "  time: T = " << time_discretization.end_time()
           << ", k = " << time_discretization.step_size() << ", "
           << time_discretization.n_steps() << " steps\n";

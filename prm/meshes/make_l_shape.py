@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """Write l_shape.msh (Gmsh 2.2 ASCII): the L-shaped plate
-[0,2]x[0,1] + [0,1]x[1,2] [m] in quadrilaterals of size 1/n, with the
+[0,2]x[0,1] + [0,1]x[1,2] [m] in quadrilaterals of size 1/n (or triangles: each quadrilateral cut along
+its diagonal from the lower left to the upper right corner), with the
 boundary ids (physical tags) used by prm/l_shape_gmsh.prm:
 1 = bottom (y = 0), 2 = left (x = 0), 3 = right end (x = 2), 4 = the rest.
-Usage: make_l_shape.py [n] > l_shape.msh   (default n = 4)"""
+Usage: make_l_shape.py [n] [triangles] > l_shape.msh   (default n = 4)
+       make_l_shape.py 4 triangles > l_shape_triangles.msh"""
 import sys
 
 n = int(sys.argv[1]) if len(sys.argv) > 1 else 4
+triangles = len(sys.argv) > 2 and sys.argv[2] == "triangles"
 inside = lambda i, j: not (i > n and j > n)  # grid point (i/n, j/n)
 ids = {}
 nodes = []
@@ -39,13 +42,16 @@ for i in range(n):
 
 out = ["$MeshFormat", "2.2 0 8", "$EndMeshFormat", "$Nodes", str(len(nodes))]
 out += [f"{k + 1} {x:.17g} {y:.17g} 0" for k, (x, y) in enumerate(nodes)]
-out += ["$EndNodes", "$Elements", str(len(lines) + len(quads))]
+cells = quads
+if triangles:  # Gmsh type 2 (triangle) instead of 3 (quadrilateral)
+    cells = [t for a, b, c, d in quads for t in ([a, b, c], [a, c, d])]
+out += ["$EndNodes", "$Elements", str(len(lines) + len(cells))]
 e = 0
 for tag, a, b in lines:
     e += 1
     out.append(f"{e} 1 2 {tag} {tag} {a} {b}")
-for q in quads:
+for q in cells:
     e += 1
-    out.append(f"{e} 3 2 1 1 " + " ".join(map(str, q)))
+    out.append(f"{e} {2 if triangles else 3} 2 1 1 " + " ".join(map(str, q)))
 out += ["$EndElements"]
 print("\n".join(out))
