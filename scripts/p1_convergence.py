@@ -46,9 +46,11 @@ def run(element, n, steps, work):
     last = rows[-1]
     estimate = max(float(r["estimate_space"]) + float(r["estimate_time"])
                    for r in rows)
+    cg = [int(r["linear_iterations"]) for r in rows[1:]]
     return dict(element=element, n=n, cells=int(last["cells"]),
                 dofs=int(last["dofs"]), time=float(last["time"]),
-                estimate=estimate, seconds=time.time() - start,
+                estimate=estimate, cg=sum(cg) / len(cg),
+                seconds=time.time() - start,
                 **{c: float(last[c]) for c in COLUMNS})
 
 
@@ -78,15 +80,16 @@ def fmt(x, spec):
 def table(results):
     lines = ["| element | squares | cells | dofs | u_x(1, 1) | u_y(1, 1) | "
              "u_x(1, 0.5) | u_y(1, 0.5) | change from the coarser mesh | "
-             "observed order | P1 − Q1 | estimated error | run [s] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "observed order | P1 − Q1 | estimated error | CG its per step | "
+             "run [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         lines.append(
             f"| {r['element']} | {r['n']}² | {r['cells']} | {r['dofs']} | "
             + " | ".join(f"{r[c]:.6e}" for c in COLUMNS)
             + f" | {fmt(r['change'], '.2e')} | {fmt(r['order'], '.2f')} | "
             f"{fmt(r['to_other'], '.2e')} | {r['estimate']:.3e} | "
-            f"{r['seconds']:.1f} |")
+            f"{r['cg']:.1f} | {r['seconds']:.1f} |")
     return lines
 
 

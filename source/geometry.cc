@@ -182,22 +182,33 @@ namespace VPContact
   {
     const std::string refinements = " and Geometry/Global refinements = "
                                     + std::to_string(n_global_refinements);
+    // A mesh of simplices lives whole on every rank (Discretization): its
+    // refined cells count against each rank's memory like coarse cells.
+    const auto check_memory
+      = [&](const double n_coarse_cells, const std::string &entries) {
+          const double n_cells
+            = n_coarse_cells * std::pow(2., double(dim) * n_finest_refinements);
+          check_mesh_memory(
+            dim,
+            simplex ? n_cells : n_coarse_cells,
+            simplex ? 0 : n_finest_refinements,
+            entries + (simplex ? " with Geometry/Cell type = simplex" : ""),
+            triangulation.get_communicator());
+        };
     if (shape == Shape::box)
       {
         // Before the cells exist: a box of 10^12 cells must be refused, not
         // built until memory runs out.
-        double      n_coarse_cells = 1;
+        // (2 triangles or 5 tetrahedra per box cell on simplices).
+        double      n_coarse_cells = simplex ? (dim == 2 ? 2 : 5) : 1;
         std::string list;
         for (const unsigned int n : subdivisions)
           {
             n_coarse_cells *= n;
             list += (list.empty() ? "" : ", ") + std::to_string(n);
           }
-        check_mesh_memory(dim,
-                          n_coarse_cells,
-                          n_finest_refinements,
-                          "Geometry/Subdivisions = " + list + refinements,
-                          triangulation.get_communicator());
+        check_memory(n_coarse_cells,
+                     "Geometry/Subdivisions = " + list + refinements);
         if (simplex)
           create_simplex_box(triangulation);
         else
@@ -214,13 +225,10 @@ namespace VPContact
         // without a message on anything else.
         Triangulation<dim> coarse;
         read_mesh_file(coarse);
-        check_mesh_memory(dim,
-                          coarse.n_active_cells(),
-                          n_finest_refinements,
-                          "Geometry/Mesh file = " + mesh_file_as_given + " ("
-                            + std::to_string(coarse.n_active_cells())
-                            + " cells)" + refinements,
-                          triangulation.get_communicator());
+        check_memory(coarse.n_active_cells(),
+                     "Geometry/Mesh file = " + mesh_file_as_given + " ("
+                       + std::to_string(coarse.n_active_cells()) + " cells)"
+                       + refinements);
         triangulation.copy_triangulation(coarse);
       }
   }
