@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
-# The paper scene (24 x 24 cells, 20 steps) with each package and method, on
-# 1 and 2 ranks: its statistics.csv must equal that of the serial Trilinos
-# run with CG and AMG to the solver tolerance. The columns compared are every
+# The paper scene (24 x 24 cells, 20 steps; prm/SCENE.prm, default
+# paper_fig1, or paper_fig1_p1 on triangles with its monitor points) with
+# each package and method, on 1 and 2 ranks: its statistics.csv must equal
+# that of the serial Trilinos run with CG and AMG to the solver tolerance. The columns compared are every
 # column but wall_time and linear_iterations (which differ by method), with
 # numdiff's absolute tolerance 1e-8 and relative 1e-7, far above the solver
 # tolerance of 1e-12 and far below any figure of the model.
-# Usage: run.sh VPCONTACT EXPECTED_OUTPUT
+# Usage: run.sh VPCONTACT EXPECTED_OUTPUT [SCENE]
 set -u
 vpcontact=$1
 expected=$2
-work=$(pwd)/packages_work
+scene=${3:-paper_fig1}
+work=$(pwd)/${scene}_work
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
@@ -17,7 +19,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 
 run() { # name ranks package method
   cat > "$1.prm" << PRM
-include $here/../../prm/paper_fig1.prm
+include $here/../../prm/$scene.prm
 subsection Geometry
   set Subdivisions = 24, 24
 end
