@@ -84,7 +84,9 @@ def histories(folder, out, scene):
     save(fig, os.path.join(out, f"{scene}_history.png"))
 
 
-def paper_figures(folder, out, scene="paper_fig1"):
+def paper_figures(folder, out, scene="paper_fig1", element=""):
+    """Figs. 2-4 of the paper; element names a non-default element in the
+    titles."""
     t, pvtu = time_series(folder)[-1]
     points, cells, arrays = read(pvtu)
     x = deformed(points, arrays)
@@ -98,7 +100,7 @@ def paper_figures(folder, out, scene="paper_fig1"):
     ax.set_aspect("equal")
     ax.autoscale()
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12))
-    ax.set_title(f"Deformed mesh at t = {t:g} s (true scale)")
+    ax.set_title(f"Deformed mesh at t = {t:g} s (true scale){element}")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     save(fig, os.path.join(out, f"{scene}_deformed.png"))
@@ -112,7 +114,7 @@ def paper_figures(folder, out, scene="paper_fig1"):
     fig.colorbar(patches, ax=ax, label="von Mises norm [N/m$^2$]")
     ax.set_aspect("equal")
     ax.autoscale()
-    ax.set_title(f"Von Mises stress norm at t = {t:g} s")
+    ax.set_title(f"Von Mises stress norm at t = {t:g} s{element}")
     save(fig, os.path.join(out, f"{scene}_von_mises.png"))
 
     # Fig. 4: damage field (Q1 or P1, nodal values) on the deformed body.
@@ -123,7 +125,7 @@ def paper_figures(folder, out, scene="paper_fig1"):
                            shading="gouraud", cmap="inferno", vmin=0, vmax=1)
     fig.colorbar(shading, ax=ax, label="damage $\\zeta$ (1 sound, 0 broken)")
     ax.set_aspect("equal")
-    ax.set_title(f"Damage at t = {t:g} s")
+    ax.set_title(f"Damage at t = {t:g} s{element}")
     save(fig, os.path.join(out, f"{scene}_damage.png"))
 
     histories(folder, out, scene)
@@ -245,7 +247,7 @@ if __name__ == "__main__":
     os.makedirs(figures, exist_ok=True)
     paper_figures(os.path.join(results, "paper_fig1"), figures)
     paper_figures(os.path.join(results, "paper_fig1_p1"), figures,
-                  "paper_fig1_p1")
+                  "paper_fig1_p1", ", P1 on triangles")
     slip_figures(os.path.join(results, "paper_fig1_slip"), figures)
     slip3d_figures(os.path.join(results, "paper_fig1_3d_slip"), figures)
     paper3d_figures(os.path.join(results, "paper_fig1_3d"), figures)
