@@ -93,6 +93,23 @@ def table(results):
     return lines
 
 
+def summary(results):
+    """The sentences under the table."""
+    p1 = [r for r in results if r["element"] == "P1"]
+    q1 = [r for r in results if r["element"] == "Q1"]
+    return ["", f"On the finest meshes the observed order of the monitor "
+            f"displacement is {p1[-1]['order']:.2f} for P1 and "
+            f"{q1[-1]['order']:.2f} for Q1, with k = 0.01 on every mesh. "
+            f"P1 − Q1 goes from {p1[0]['to_other']:.2e} at {p1[0]['n']}² to "
+            f"{p1[-1]['to_other']:.2e} at {p1[-1]['n']}², a factor "
+            f"{p1[0]['to_other'] / p1[-1]['to_other']:.1f} over two "
+            f"refinements: both elements approach one limit. At "
+            f"{p1[-1]['n']}² the P1 run takes "
+            f"{p1[-1]['seconds'] / q1[-1]['seconds']:.2f} times the Q1 run's "
+            f"time, with {p1[-1]['cg'] / q1[-1]['cg']:.2f} times its CG "
+            f"iterations per step on the same number of unknowns."]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, default=0)
@@ -112,7 +129,7 @@ def main():
         writer.writerows(results)
     doc = os.path.join(ROOT, "doc", "simplex.md")
     text = open(doc).read()
-    block = "\n".join([BEGIN] + table(results) + [END])
+    block = "\n".join([BEGIN] + table(results) + summary(results) + [END])
     text = re.sub(re.escape(BEGIN) + ".*?" + re.escape(END),
                   lambda _: block, text, flags=re.S)
     open(doc, "w").write(text)

@@ -221,8 +221,8 @@ namespace VPContact
     else
       {
         // The file is read into a serial mesh and its cells are checked
-        // there: p4est takes only quadrilaterals (hexahedra) and fails
-        // without a message on anything else.
+        // there, before the distributed mesh is built from it (p4est fails
+        // without a message on a mesh it cannot hold).
         Triangulation<dim> coarse;
         read_mesh_file(coarse);
         check_memory(coarse.n_active_cells(),

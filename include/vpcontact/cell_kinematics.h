@@ -26,9 +26,9 @@ namespace VPContact
   /**
    * What the passes over all cells of every step need of a cell: for each
    * quadrature point the gradients of the scalar shape functions of the
-   * element's base (Q1), the point itself, and where the cell's degrees of
-   * freedom sit in the local storage of a ghosted vector. The element is
-   * the simulator's FESystem: dim copies of one scalar element for the
+   * element's base (Q1 or P1), the point itself, and where the cell's degrees
+   * of freedom sit in the local storage of a ghosted vector. The element is the
+   * simulator's FESystem: dim copies of one scalar element for the
    * displacement, and possibly one more for the damage.
    *
    * Why: the right-hand side and the stress update visit every cell in
