@@ -136,11 +136,12 @@ namespace VPContact
     prm.leave_subsection();
     if (shape == Shape::file)
       {
-        // The file decides the cell type; it is read once here for it.
-        Triangulation<dim> coarse;
-        read_mesh_file(coarse);
+        // The file decides the cell type. It is read here, and the mesh kept
+        // for the first create_coarse_mesh().
+        file_mesh = std::make_shared<Triangulation<dim>>();
+        read_mesh_file(*file_mesh);
         const bool file_simplex
-          = coarse.begin_active()->reference_cell().is_simplex();
+          = file_mesh->begin_active()->reference_cell().is_simplex();
         VPContactCheckParameter(file_simplex || !simplex,
                                 "Geometry/Cell type",
                                 "simplex",
@@ -166,8 +167,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Geometry<dim>::create_mesh(
-    parallel::TriangulationBase<dim> &triangulation) const
+  Geometry<dim>::create_mesh(parallel::TriangulationBase<dim> &triangulation)
   {
     create_coarse_mesh(triangulation);
     triangulation.refine_global(n_global_refinements);
@@ -178,7 +178,7 @@ namespace VPContact
   template <int dim>
   void
   Geometry<dim>::create_coarse_mesh(
-    parallel::TriangulationBase<dim> &triangulation) const
+    parallel::TriangulationBase<dim> &triangulation)
   {
     const std::string refinements = " and Geometry/Global refinements = "
                                     + std::to_string(n_global_refinements);
@@ -223,13 +223,17 @@ namespace VPContact
         // The file is read into a serial mesh and its cells are checked
         // there, before the distributed mesh is built from it (p4est fails
         // without a message on a mesh it cannot hold).
-        Triangulation<dim> coarse;
-        read_mesh_file(coarse);
-        check_memory(coarse.n_active_cells(),
+        std::shared_ptr<Triangulation<dim>> coarse = std::move(file_mesh);
+        if (!coarse)
+          {
+            coarse = std::make_shared<Triangulation<dim>>();
+            read_mesh_file(*coarse);
+          }
+        check_memory(coarse->n_active_cells(),
                      "Geometry/Mesh file = " + mesh_file_as_given + " ("
-                       + std::to_string(coarse.n_active_cells()) + " cells)"
+                       + std::to_string(coarse->n_active_cells()) + " cells)"
                        + refinements);
-        triangulation.copy_triangulation(coarse);
+        triangulation.copy_triangulation(*coarse);
       }
   }
 

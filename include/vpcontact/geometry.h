@@ -8,6 +8,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/distributed/tria_base.h>
 
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -44,14 +45,14 @@ namespace VPContact
      * message that names the file when a mesh file is missing or unreadable.
      */
     void
-    create_mesh(parallel::TriangulationBase<dim> &triangulation) const;
+    create_mesh(parallel::TriangulationBase<dim> &triangulation);
 
     /**
      * Only the coarse mesh, without the global refinements: what
      * Triangulation::load() of a checkpoint starts from.
      */
     void
-    create_coarse_mesh(parallel::TriangulationBase<dim> &triangulation) const;
+    create_coarse_mesh(parallel::TriangulationBase<dim> &triangulation);
 
     /// The CRC-32 of the mesh file in hex, or "" for a box (or a file
     /// that cannot be read; create_mesh() says so).
@@ -107,6 +108,9 @@ namespace VPContact
     unsigned int n_global_refinements = 0;
     unsigned int n_finest_refinements = 0;
     bool         simplex              = false;
+    /// The mesh file as parse_parameters() read it, until the first
+    /// create_coarse_mesh() takes it (a later call reads the file again).
+    std::shared_ptr<Triangulation<dim>> file_mesh;
   };
 } // namespace VPContact
 
