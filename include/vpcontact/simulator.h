@@ -70,13 +70,15 @@ namespace VPContact
    * ConvergenceStudy (refinement cycles, errors against a reference). The
    * displacement problem's linear system is a DisplacementSystem.
    *
-   * The unknowns are the displacement, Q1 (P1 on simplices, see
-   * Discretization) in every component of one FESystem, and the stress at the
-   * quadrature points of the assembly rule. A step solves for the increment du
-   * = u_n - u_{n-1} = k w (the paper's velocity problem multiplied by k, so the
-   * matrix is E and does not depend on k): (E eps(du), eps(v)) = (f_n, v) -
-   * (sigma_{n-1} + k G_{n-1}, eps(v)), then sets sigma_n = sigma_{n-1} + k
-   * G_{n-1} + E eps(du).
+   * The unknowns are the displacement, Q1 in every component of one
+   * FESystem (P1 on triangles and tetrahedra, see Discretization), and the
+   * stress at the quadrature points of the assembly rule. A step solves for
+   * the increment du = u_n - u_{n-1} = k w (the paper's velocity problem
+   * multiplied by k, so the matrix is E and does not depend on k):
+   *
+   *   (E eps(du), eps(v)) = (f_n, v) - (sigma_{n-1} + k G_{n-1}, eps(v)),
+   *
+   * then sets sigma_n = sigma_{n-1} + k G_{n-1} + E eps(du).
    */
   template <int dim>
   class Simulator
