@@ -11,6 +11,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 #include <dlfcn.h>
 #include <filesystem>
 #include <fstream>
@@ -252,9 +254,16 @@ namespace VPContact
     // every rank.
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
     set_blas_threads(MultithreadInfo::n_threads());
-    const MPI_Comm           communicator = MPI_COMM_WORLD;
-    std::vector<std::string> args(argv + 1, argv + argc);
-    const bool               resume = take_resume_flag(args);
+    const MPI_Comm communicator = MPI_COMM_WORLD;
+    // Rank 0's command line for all ranks, as its parameter file: under
+    // mpirun in MPMD mode the ranks may be given different ones (--resume
+    // on one rank only would take it into a checkpoint search alone).
+    std::vector<std::string> args
+      = Utilities::MPI::broadcast(communicator,
+                                  std::vector<std::string>(argv + 1,
+                                                           argv + argc),
+                                  0);
+    const bool resume = take_resume_flag(args);
 
     // The scene's text, once read: messages about its lines name the file
     // and line they came from.

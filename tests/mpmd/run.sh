@@ -9,6 +9,7 @@
 #  * a copy broken, different or missing in rank 1's folder is never read:
 #    the run completes, and its statistics.csv equals that of the run from
 #    rank 0's folder alone (numdiff, absolute 1e-8, relative 1e-7);
+#  * so is rank 1's command line: --resume given to rank 1 alone is ignored;
 #  * a relative Output/Directory, which each rank takes from its own working
 #    directory, is refused when a rank does not see the folder that rank 0
 #    made (its pieces of the fields would be written elsewhere).
@@ -51,9 +52,9 @@ report() {
   grep -E '^(Error|Stopped|Run complete)' "$1" | sed "s|$work/||g"
 }
 
-mpmd() { # name
+mpmd() { # name [option of rank 1]
   timeout 300 mpirun -np 1 -wdir "$work/$1/A" "$vpcontact" scene.prm : \
-    -np 1 -wdir "$work/$1/B" "$vpcontact" scene.prm > "$1.log" 2>&1
+    -np 1 -wdir "$work/$1/B" "$vpcontact" ${2:-} scene.prm > "$1.log" 2>&1
   echo "$1: exit status $?"
   report "$1.log"
 }
@@ -119,6 +120,12 @@ end"
   scene $name/A $name
   mkdir -p $name/B
   mpmd $name
+  same_statistics $name
+
+  name=resume_on_rank_1
+  scene $name/A $name
+  scene $name/B $name
+  mpmd $name --resume
   same_statistics $name
 
   name=output_folder_not_shared
