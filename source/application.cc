@@ -1,5 +1,6 @@
 // The command line: help, parameter listing, and running a scene.
 #include <vpcontact/application.h>
+#include <vpcontact/exit_agreement.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/parameter_file.h>
 #include <vpcontact/parameter_listing.h>
@@ -10,6 +11,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 #include <dlfcn.h>
 #include <filesystem>
 #include <fstream>
@@ -122,17 +125,6 @@ namespace VPContact
 
 
 
-    int
-    report_error(const std::string &message, const MPI_Comm communicator)
-    {
-      if (Utilities::MPI::this_mpi_process(communicator) == 0)
-        std::cerr << "\nError: " << message << "\nStopped; exit status 1."
-                  << std::endl;
-      return 1;
-    }
-
-
-
     // --resume may stand before or after the scene: it is taken out of
     // @p args, so that the rest of the command line is read without it, and
     // the return value says whether it was there.
@@ -205,10 +197,49 @@ namespace VPContact
                              "SCENE.prm (see vpcontact --help)."));
 
       const std::string &filename = args[0];
-      file                        = read_parameter_file(filename);
+      file                        = read_parameter_file(filename, communicator);
       return (read_dimension(file, filename) == 2 ?
                 run_scene<2>(file, filename, resume, communicator) :
                 run_scene<3>(file, filename, resume, communicator));
+    }
+
+
+
+    // run_command_line() with every exception caught: the exit status, and
+    // in @p error the message for the user (empty if none).
+    int
+    run_caught(const std::vector<std::string> &args,
+               const bool                      resume,
+               const MPI_Comm                  communicator,
+               ParameterFile                  &file,
+               std::string                    &error)
+    {
+      try
+        {
+          return run_command_line(args, resume, communicator, file);
+        }
+      catch (const std::exception &e)
+        {
+          error = shorten_paths(file.locate(error_message(e)), args);
+        }
+      // Exceptions that are not std::exceptions come from the libraries
+      // underneath (muParser's, for one); they too end the run with a
+      // message rather than in std::terminate.
+      catch (const mu::Parser::exception_type &e)
+        {
+          error
+            = "muParser: " + e.GetMsg() + " (expression '" + e.GetExpr() + "')";
+        }
+      catch (...)
+        {
+          error = "an unknown exception stopped the program. Please report "
+                  "this with the parameter file.";
+        }
+      // An exception without a message still stops the run.
+      if (error.empty())
+        error = "the program stopped without a message. Please report this "
+                "with the parameter file.";
+      return 1;
     }
   } // namespace
 
@@ -223,37 +254,23 @@ namespace VPContact
     // every rank.
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
     set_blas_threads(MultithreadInfo::n_threads());
-    const MPI_Comm           communicator = MPI_COMM_WORLD;
-    std::vector<std::string> args(argv + 1, argv + argc);
-    const bool               resume = take_resume_flag(args);
+    const MPI_Comm communicator = MPI_COMM_WORLD;
+    // Rank 0's command line for all ranks, as its parameter file: under
+    // mpirun in MPMD mode the ranks may be given different ones (--resume
+    // on one rank only would take it into a checkpoint search alone).
+    std::vector<std::string> args
+      = Utilities::MPI::broadcast(communicator,
+                                  std::vector<std::string>(argv + 1,
+                                                           argv + argc),
+                                  0);
+    const bool resume = take_resume_flag(args);
 
     // The scene's text, once read: messages about its lines name the file
     // and line they came from.
-    ParameterFile file;
-    try
-      {
-        return run_command_line(args, resume, communicator, file);
-      }
-    catch (const std::exception &e)
-      {
-        return report_error(shorten_paths(file.locate(error_message(e)), args),
-                            communicator);
-      }
-    // Exceptions that are not std::exceptions come from the libraries
-    // underneath (muParser's, for one); they too end the run with a
-    // message rather than in std::terminate.
-    catch (const mu::Parser::exception_type &e)
-      {
-        return report_error("muParser: " + e.GetMsg() + " (expression '"
-                              + e.GetExpr() + "')",
-                            communicator);
-      }
-    catch (...)
-      {
-        return report_error("an unknown exception stopped the program. "
-                            "Please report this with the parameter file.",
-                            communicator);
-      }
-    return 0;
+    ParameterFile       file;
+    const ExitAgreement agreement(communicator);
+    std::string         error;
+    const int status = run_caught(args, resume, communicator, file, error);
+    return agreement.finish(status, error);
   }
 } // namespace VPContact

@@ -57,10 +57,10 @@ namespace VPContact
 
   template <int dim>
   void
-  ConvergenceStudy<dim>::prepare()
+  ConvergenceStudy<dim>::prepare(const MPI_Comm communicator)
   {
     if (reference_solution.compares())
-      reference_solution.read_index();
+      reference_solution.read_index(communicator);
   }
 
 
@@ -160,7 +160,8 @@ namespace VPContact
       {
         const ErrorNorms errors
           = compute_errors(local,
-                           reference_solution.template read<dim>(t),
+                           reference_solution.template read<dim>(t,
+                                                                 communicator),
                            reference_solution.comparison_folder(),
                            communicator);
         ++compared_times;

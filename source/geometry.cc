@@ -3,6 +3,7 @@
 #include <vpcontact/geometry.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/mesh_checks.h>
+#include <vpcontact/rank_zero_input.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace VPContact
 {
@@ -27,6 +29,44 @@ namespace VPContact
       for (unsigned int i = 1; i < n; ++i)
         s += ", " + value;
       return s;
+    }
+
+    // Gmsh writes "$MeshFormat" and then "version file-type data-size" on
+    // the next line, file-type 1 for a binary file. GridIn reads only
+    // ASCII: on binary bytes it stops at the first word it does not know.
+    bool
+    is_binary_gmsh(const std::string &bytes)
+    {
+      std::istringstream in(bytes.substr(0, 256));
+      std::string        keyword;
+      double             version   = 0;
+      int                file_type = 0;
+      return (in >> keyword) && keyword == "$MeshFormat"
+             && (in >> version >> file_type) && file_type != 0;
+    }
+
+    // Whether @p bytes, in the format of the file extension @p extension,
+    // read as a mesh of dimension @p other_dim: what a file of tetrahedra
+    // read for a 2D scene (or one of triangles for a 3D scene) is, since
+    // GridIn's own message lists only the cell types of the scene's
+    // dimension.
+    template <int other_dim>
+    bool
+    reads_as_mesh_of(const std::string &bytes, const std::string &extension)
+    {
+      try
+        {
+          Triangulation<other_dim> mesh;
+          GridIn<other_dim>        grid_in;
+          grid_in.attach_triangulation(mesh);
+          std::istringstream in(bytes);
+          grid_in.read(in, GridIn<other_dim>::parse_format(extension));
+          return mesh.n_active_cells() > 0;
+        }
+      catch (...)
+        {
+          return false;
+        }
     }
   } // namespace
 
@@ -93,7 +133,8 @@ namespace VPContact
   template <int dim>
   void
   Geometry<dim>::parse_parameters(ParameterHandler  &prm,
-                                  const std::string &parameter_directory)
+                                  const std::string &parameter_directory,
+                                  const MPI_Comm     communicator)
   {
     prm.enter_subsection("Geometry");
     shape = (prm.get("Mesh") == "box" ? Shape::box : Shape::file);
@@ -138,6 +179,7 @@ namespace VPContact
       {
         // The file decides the cell type. It is read here, and the mesh kept
         // for the first create_coarse_mesh().
+        read_mesh_bytes(communicator);
         file_mesh = std::make_shared<Triangulation<dim>>();
         read_mesh_file(*file_mesh);
         const bool file_simplex
@@ -269,38 +311,68 @@ namespace VPContact
 
   template <int dim>
   void
+  Geometry<dim>::read_mesh_bytes(const MPI_Comm communicator)
+  {
+    // Rank 0 alone reads the file: a rank whose working directory holds
+    // another copy, or none, never looks, and a file rank 0 cannot read
+    // stops every rank with the same message. The file is checked first:
+    // GridIn's own message for a missing file does not say which parameter
+    // it came from, and for an extension it does not know it says only
+    // "ExcInvalidState".
+    const std::string extension
+      = std::filesystem::path(mesh_file).extension().string();
+    mesh_bytes = read_on_rank_zero(communicator, [&]() {
+      std::error_code error;
+      VPContactCheckParameter(std::filesystem::is_regular_file(mesh_file, error)
+                                && std::ifstream(mesh_file).good(),
+                              "Geometry/Mesh file",
+                              mesh_file_as_given,
+                              "cannot open this file (missing, not a regular "
+                              "file, or not readable). Check the path; a "
+                              "relative path is taken from the parameter "
+                              "file's folder.");
+      VPContactCheckParameter(extension == ".msh" || extension == ".inp"
+                                || extension == ".ucd" || extension == ".vtk"
+                                || extension == ".unv",
+                              "Geometry/Mesh file",
+                              mesh_file_as_given,
+                              "the extension '" + extension
+                                + "' is not one of a mesh format this "
+                                  "program reads: .msh (Gmsh), .inp or .ucd "
+                                  "(UCD), .vtk (VTK legacy), .unv (I-DEAS).");
+      return file_bytes(mesh_file,
+                        "Geometry/Mesh file = " + mesh_file_as_given);
+    });
+    VPContactCheckParameter(
+      extension != ".msh" || !is_binary_gmsh(mesh_bytes),
+      "Geometry/Mesh file",
+      mesh_file_as_given,
+      "this is a binary Gmsh file, and only ASCII .msh files (format 2 or "
+      "4) can be read. Write it as ASCII: 'gmsh "
+        + mesh_file_as_given
+        + " -save -format msh4 -o ascii.msh' (or -format msh2) converts "
+          "it, and 'Mesh.Binary = 0;' in the .geo file (or leaving "
+          "'Save in binary format' unchecked on export) writes ASCII.");
+  }
+
+
+
+  template <int dim>
+  void
   Geometry<dim>::read_mesh_file(Triangulation<dim> &coarse) const
   {
     const std::string source = "Geometry/Mesh file = " + mesh_file_as_given;
-    // Check the file ourselves first: GridIn's own message for a missing
-    // file does not say which parameter it came from.
-    std::error_code error;
-    VPContactCheckParameter(std::filesystem::is_regular_file(mesh_file, error)
-                              && std::ifstream(mesh_file).good(),
-                            "Geometry/Mesh file",
-                            mesh_file_as_given,
-                            "cannot open this file (missing, not a regular "
-                            "file, or not readable). Check the path; a "
-                            "relative path is taken from the parameter "
-                            "file's folder.");
-    // GridIn chooses the reader by the extension, and says only
-    // "ExcInvalidState" of one it does not know.
+    // Every rank builds the mesh from the bytes rank 0 read, in the format
+    // GridIn would choose from the file name (Gmsh versions 2 and 4 are
+    // told apart by GridIn from the file's header).
     const std::string extension
-      = std::filesystem::path(mesh_file).extension().string();
-    VPContactCheckParameter(extension == ".msh" || extension == ".inp"
-                              || extension == ".ucd" || extension == ".vtk"
-                              || extension == ".unv",
-                            "Geometry/Mesh file",
-                            mesh_file_as_given,
-                            "the extension '" + extension
-                              + "' is not one of a mesh format this program "
-                                "reads: .msh (Gmsh), .inp or .ucd (UCD), "
-                                ".vtk (VTK legacy), .unv (I-DEAS).");
+      = std::filesystem::path(mesh_file).extension().string().substr(1);
     GridIn<dim> grid_in;
     grid_in.attach_triangulation(coarse);
     try
       {
-        grid_in.read(mesh_file);
+        std::istringstream in(mesh_bytes);
+        grid_in.read(in, GridIn<dim>::parse_format(extension));
       }
     catch (const std::bad_alloc &)
       {
@@ -312,6 +384,18 @@ namespace VPContact
       }
     catch (const std::exception &e)
       {
+        constexpr int other_dim = (dim == 2 ? 3 : 2);
+        VPContactCheckParameter(
+          !reads_as_mesh_of<other_dim>(mesh_bytes, extension),
+          "Geometry/Mesh file",
+          mesh_file_as_given,
+          "the file holds " + std::to_string(other_dim) + "D cells ("
+            + (dim == 2 ? "tetrahedra or hexahedra" :
+                          "triangles or quadrilaterals")
+            + "), and the scene is " + std::to_string(dim)
+            + "D. Set Dimension = " + std::to_string(other_dim)
+            + " at the top of the parameter file, or give a "
+            + std::to_string(dim) + "D mesh.");
         AssertThrow(false,
                     ExcMessage(source + ": GridIn could not read it as a "
                                + std::to_string(dim)
@@ -329,13 +413,8 @@ namespace VPContact
   {
     if (shape == Shape::box)
       return "";
-    std::ifstream in(mesh_file, std::ios::binary);
-    if (!in)
-      return "";
     boost::crc_32_type crc;
-    char               buffer[1 << 16];
-    while (in.read(buffer, sizeof(buffer)) || in.gcount() > 0)
-      crc.process_bytes(buffer, in.gcount());
+    crc.process_bytes(mesh_bytes.data(), mesh_bytes.size());
     char text[16];
     std::snprintf(text, sizeof(text), "%08x", crc.checksum());
     return text;

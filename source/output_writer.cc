@@ -204,6 +204,37 @@ namespace VPContact
                             problem
                               + ". Give a folder that can be created "
                                 "and written.");
+    check_seen_by_all_ranks(communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  OutputWriter<dim>::check_seen_by_all_ranks(const MPI_Comm communicator) const
+  {
+    // Every rank writes its own piece of the fields into the folder, which
+    // rank 0 has just made: a rank that does not see it (started in another
+    // working directory, or on a machine without the file system) would
+    // write its pieces where the .pvtu records do not look.
+    if (output_every == 0)
+      return;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const unsigned int blind
+      = Utilities::MPI::min(has_folder_marker(output_directory,
+                                              output_folder_marker) ?
+                              n_ranks :
+                              Utilities::MPI::this_mpi_process(communicator),
+                            communicator);
+    VPContactCheckParameter(
+      blind == n_ranks,
+      "Output/Directory",
+      output_directory,
+      "MPI rank " + std::to_string(blind)
+        + " does not see this folder, which rank 0 made, and could not "
+          "write its part of the fields there. Start all ranks in one "
+          "working directory on a file system they share, or give an "
+          "absolute path there.");
   }
 
 

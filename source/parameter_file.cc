@@ -3,9 +3,14 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/parameter_file.h>
 #include <vpcontact/parameter_listing.h>
+#include <vpcontact/rank_zero_input.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -166,6 +171,21 @@ namespace VPContact
     ParameterFile            file;
     std::vector<std::string> chain;
     append_with_includes(filename, chain, file);
+    return file;
+  }
+
+
+
+  ParameterFile
+  read_parameter_file(const std::string &filename, const MPI_Comm communicator)
+  {
+    ParameterFile file;
+    file.text = read_on_rank_zero(communicator, [&]() {
+      file = read_parameter_file(filename);
+      return file.text;
+    });
+    file.origins
+      = dealii::Utilities::MPI::broadcast(communicator, file.origins, 0);
     return file;
   }
 

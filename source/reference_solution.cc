@@ -2,6 +2,7 @@
 // Theorem 2 between a run and a reference on nested meshes.
 #include <vpcontact/input_error.h>
 #include <vpcontact/output_writer.h>
+#include <vpcontact/rank_zero_input.h>
 #include <vpcontact/reference_solution.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -356,16 +357,21 @@ namespace VPContact
 
 
   void
-  ReferenceSolution::read_index()
+  ReferenceSolution::read_index(const MPI_Comm communicator)
   {
-    const std::string filename = compare_folder + "/reference.index";
-    std::ifstream     in(filename);
-    AssertThrow(in,
-                ExcMessage("Reference solution/Compare with = " + compare_folder
-                           + ": cannot read " + filename
-                           + ". Run the reference scene first (Reference "
-                             "solution/Write snapshots = true writes it into "
-                             "its Output/Directory/reference)."));
+    // Rank 0 reads the index (and the snapshots, in read()) and hands it to
+    // every rank: all compare at the same times, and a file that rank 0
+    // cannot read stops all ranks together.
+    const std::string  filename = compare_folder + "/reference.index";
+    std::istringstream in(read_on_rank_zero(communicator, [&]() {
+      AssertThrow(std::ifstream(filename).good(),
+                  ExcMessage("Reference solution/Compare with = "
+                             + compare_folder + ": cannot read " + filename
+                             + ". Run the reference scene first (Reference "
+                               "solution/Write snapshots = true writes it "
+                               "into its Output/Directory/reference)."));
+      return file_bytes(filename, filename);
+    }));
     index.clear();
     for (std::string line; std::getline(in, line);)
       if (!line.empty() && line[0] != '#')
@@ -400,19 +406,21 @@ namespace VPContact
 
   template <int dim>
   Snapshot<dim>
-  ReferenceSolution::read(const double t) const
+  ReferenceSolution::read(const double t, const MPI_Comm communicator) const
   {
     for (const auto &[time, file] : index)
       if (std::abs(time - t) <= time_tolerance)
         {
           const std::string filename = compare_folder + "/" + file;
-          std::ifstream     in(filename, std::ios::binary);
-          AssertThrow(in,
-                      ExcMessage("Cannot read the reference snapshot "
-                                 + filename + " listed in its index."));
-          const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
-                                        std::istreambuf_iterator<char>());
-          return Snapshot<dim>::from_bytes(bytes, filename);
+          const std::string bytes    = read_on_rank_zero(communicator, [&]() {
+            AssertThrow(std::ifstream(filename).good(),
+                        ExcMessage("Cannot read the reference snapshot "
+                                   + filename + " listed in its index."));
+            return file_bytes(filename, filename);
+          });
+          return Snapshot<dim>::from_bytes(std::vector<char>(bytes.begin(),
+                                                             bytes.end()),
+                                           filename);
         }
     AssertThrow(false,
                 ExcMessage("No reference snapshot at t = " + to_text(t)));
@@ -434,7 +442,7 @@ namespace VPContact
   template void
   ReferenceSolution::write(const Snapshot<3> &, const MPI_Comm);
   template Snapshot<2>
-  ReferenceSolution::read(const double) const;
+  ReferenceSolution::read(const double, const MPI_Comm) const;
   template Snapshot<3>
-  ReferenceSolution::read(const double) const;
+  ReferenceSolution::read(const double, const MPI_Comm) const;
 } // namespace VPContact

@@ -28,10 +28,12 @@ namespace VPContact
     // element and the triangulation.
     template <int dim>
     Geometry<dim>
-    parsed_geometry(ParameterHandler &prm, const std::string &directory)
+    parsed_geometry(ParameterHandler  &prm,
+                    const std::string &directory,
+                    const MPI_Comm     communicator)
     {
       Geometry<dim> geometry;
-      geometry.parse_parameters(prm, directory);
+      geometry.parse_parameters(prm, directory, communicator);
       return geometry;
     }
   } // namespace
@@ -77,7 +79,7 @@ namespace VPContact
     // view, and an input error thrown while the simulator is built does not
     // trigger TimerOutput's collective clean-up in its destructor.
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , geometry(parsed_geometry<dim>(prm, parameter_directory))
+    , geometry(parsed_geometry<dim>(prm, parameter_directory, communicator))
     , discretization(geometry.simplex_cells(), with_damage(prm))
     , mesh(discretization.make_triangulation(communicator))
     , triangulation(*mesh)
@@ -165,7 +167,7 @@ namespace VPContact
     if (!discretization.simplex())
       checkpointing.check_folders(output_writer.directory(), mpi_communicator);
     make_mesh();
-    convergence_study.prepare();
+    convergence_study.prepare(mpi_communicator);
     for (unsigned int cycle = 0; cycle < convergence_study.n_cycles(); ++cycle)
       {
         if (cycle > 0)

@@ -1,6 +1,7 @@
 // The simulator's checkpoints: the state of a step written with the
 // distributed mesh, and a run resumed from it (see doc/checkpoint.md).
 #include <vpcontact/checkpoint_fields.h>
+#include <vpcontact/exit_agreement.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 
@@ -263,10 +264,17 @@ namespace VPContact
     const auto counter = [&](const std::string &name) {
       return checkpoint_counter(checkpoint, name);
     };
+    // A state that does not fit the nodes is found by the ranks that own
+    // them: all ranks stop together (each read calls collective functions,
+    // so each is a step of its own).
     if (friction_problem)
-      friction_problem->read_checkpoint(sets, counter);
+      stop_together(mpi_communicator, [&]() {
+        friction_problem->read_checkpoint(sets, counter);
+      });
     if (damage_problem)
-      damage_problem->read_checkpoint(sets_owned, counter);
+      stop_together(mpi_communicator, [&]() {
+        damage_problem->read_checkpoint(sets_owned, counter);
+      });
     make_constraints(time_discretization.time(checkpoint.step), &solution);
 
     restore_output_records(checkpoint);

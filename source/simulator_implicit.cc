@@ -1,6 +1,7 @@
 // The simulator's implicit (backward Euler) viscoplastic step: a global
 // Newton iteration whose stress comes from a local Newton solve at every
 // quadrature point, for laws too fast for the paper's explicit step.
+#include <vpcontact/exit_agreement.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 
@@ -96,16 +97,20 @@ namespace VPContact
 
     displacement.matrix = 0.;
     displacement.rhs    = 0.;
-    for (const auto &cell : owned_cells)
-      {
-        assemble_implicit_cell(cell, k, scratch, data);
-        get_displacement_dof_indices(cell, data.dof_indices);
-        constraints.distribute_local_to_global(data.cell_matrix,
-                                               data.cell_rhs,
-                                               data.dof_indices,
-                                               displacement.matrix,
-                                               displacement.rhs);
-      }
+    // The local Newton solve may fail at a point of one rank's cells only:
+    // all ranks stop together, before the collective compress().
+    stop_together(mpi_communicator, [&]() {
+      for (const auto &cell : owned_cells)
+        {
+          assemble_implicit_cell(cell, k, scratch, data);
+          get_displacement_dof_indices(cell, data.dof_indices);
+          constraints.distribute_local_to_global(data.cell_matrix,
+                                                 data.cell_rhs,
+                                                 data.dof_indices,
+                                                 displacement.matrix,
+                                                 displacement.rhs);
+        }
+    });
     displacement.matrix.compress(VectorOperation::add);
     displacement.rhs.compress(VectorOperation::add);
   }

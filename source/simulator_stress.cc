@@ -1,6 +1,7 @@
 // The simulator's stress: the update sigma_n = sigma_{n-1} + k G_{n-1} +
 // E eps(du) at every quadrature point, its safeguards, and the quantities
 // derived from it for output.
+#include <vpcontact/exit_agreement.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
@@ -121,16 +122,20 @@ namespace VPContact
       = cell_kinematics.local_entries(increment);
     const double *const solution_entries
       = implicit ? cell_kinematics.local_entries(solution) : nullptr;
+    // The local Newton solve of the backward Euler update may fail at a
+    // point of one rank's cells only: all ranks stop together.
     std::vector<double> chunk_largest(stress_chunks);
-    parallel::apply_to_subranges(
-      0u,
-      stress_chunks,
-      [&](const unsigned int begin, const unsigned int end) {
-        for (unsigned int c = begin; c < end; ++c)
-          chunk_largest[c]
-            = update_stress_chunk(c, increment_entries, solution_entries);
-      },
-      1);
+    stop_together(mpi_communicator, [&]() {
+      parallel::apply_to_subranges(
+        0u,
+        stress_chunks,
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int c = begin; c < end; ++c)
+            chunk_largest[c]
+              = update_stress_chunk(c, increment_entries, solution_entries);
+        },
+        1);
+    });
     double largest
       = *std::max_element(chunk_largest.begin(), chunk_largest.end());
     largest = Utilities::MPI::max(largest, mpi_communicator);

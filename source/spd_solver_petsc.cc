@@ -5,6 +5,7 @@
 #include <vpcontact/spd_solver.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 #include <petscksp.h>
 #include <string>
@@ -80,8 +81,15 @@ namespace VPContact
             SolverControl                       &control,
             const std::vector<unsigned int>     &held_rows) override
       {
-        Assert(held_rows.empty() || !is_direct(), ExcNotImplemented());
-        if (!held_rows.empty())
+        // Whether rows are held is decided over all ranks: the solve on the
+        // free rows and the solve with all rows call different collective
+        // PETSc functions, and a rank that holds none of its rows (its part
+        // of the body all damaged, say) must still take the same branch as
+        // one that holds some, or both wait for ever.
+        const bool any_held
+          = Utilities::MPI::logical_or(!held_rows.empty(), communicator);
+        Assert(!any_held || !is_direct(), ExcNotImplemented());
+        if (any_held)
           return solve_on_free_rows(solution, rhs, control, held_rows);
         copy_to_petsc(rhs, b);
         copy_to_petsc(solution, x);

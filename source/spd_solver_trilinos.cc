@@ -3,6 +3,7 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/spd_solver.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -92,8 +93,12 @@ namespace VPContact
             precondition(x, b);
             return 1;
           }
+        // The branch is taken alike on all ranks (a rank may hold none of
+        // its rows while another holds some): both call the same collective
+        // operations today, but only a common decision keeps it so.
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        if (held.empty())
+        if (!Utilities::MPI::logical_or(!held.empty(),
+                                        matrix->get_mpi_communicator()))
           cg.solve(*matrix, x, b, *preconditioner);
         else
           cg.solve(masked([this](auto       &dst,

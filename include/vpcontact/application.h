@@ -7,10 +7,11 @@ namespace VPContact
   /**
    * Run the program as `vpcontact [--help | --print-parameters [dim] |
    * [--resume] scene.prm]`: initialize MPI, read the dimension from the
-   * scene, run the simulator of that dimension. Errors are caught here and
-   * printed (on rank 0) as one clean message; the return value is the exit
-   * status: 0, 1 on an error, 75 when a signal stopped the run after a
-   * checkpoint.
+   * scene (which rank 0 reads for all ranks), run the simulator of that
+   * dimension. Errors are caught here and printed as one clean message,
+   * by rank 0 or, if one rank stopped alone, by that rank (see
+   * ExitAgreement); the return value is the exit status: 0, 1 on an error,
+   * 75 when a signal stopped the run after a checkpoint.
    */
   int
   run_application(int argc, char **argv);

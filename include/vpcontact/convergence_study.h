@@ -55,9 +55,10 @@ namespace VPContact
       return reference_solution;
     }
 
-    /// Before the first cycle: read the reference's index, if compared.
+    /// Before the first cycle: read the reference's index, if compared
+    /// (collective).
     void
-    prepare();
+    prepare(const MPI_Comm communicator);
 
     /**
      * A cycle on @p triangulation begins: no errors yet, indicators zero.

@@ -34,11 +34,16 @@ namespace VPContact
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// Read the section; relative mesh file names are taken from
-    /// @p parameter_directory, the folder of the parameter file.
+    /**
+     * Read the section; relative mesh file names are taken from
+     * @p parameter_directory, the folder of the parameter file. A mesh
+     * file is read by rank 0 of @p communicator alone and its bytes are
+     * handed to every rank, which builds its mesh from them (collective).
+     */
     void
     parse_parameters(ParameterHandler  &prm,
-                     const std::string &parameter_directory);
+                     const std::string &parameter_directory,
+                     const MPI_Comm     communicator);
 
     /**
      * Fill @p triangulation with the coarse mesh and refine it. Throws with a
@@ -54,8 +59,7 @@ namespace VPContact
     void
     create_coarse_mesh(parallel::TriangulationBase<dim> &triangulation);
 
-    /// The CRC-32 of the mesh file in hex, or "" for a box (or a file
-    /// that cannot be read; create_mesh() says so).
+    /// The CRC-32 of the mesh file in hex, or "" for a box.
     std::string
     mesh_file_checksum() const;
 
@@ -88,7 +92,11 @@ namespace VPContact
     void
     create_simplex_box(Triangulation<dim> &triangulation) const;
 
-    /// Read the mesh file into @p coarse and check its cells.
+    /// Read the mesh file on rank 0 into mesh_bytes on every rank.
+    void
+    read_mesh_bytes(const MPI_Comm communicator);
+
+    /// Build @p coarse from mesh_bytes and check its cells.
     void
     read_mesh_file(Triangulation<dim> &coarse) const;
 
@@ -108,8 +116,12 @@ namespace VPContact
     unsigned int n_global_refinements = 0;
     unsigned int n_finest_refinements = 0;
     bool         simplex              = false;
-    /// The mesh file as parse_parameters() read it, until the first
-    /// create_coarse_mesh() takes it (a later call reads the file again).
+    /// The bytes of the mesh file, as rank 0 read them once: later coarse
+    /// meshes (refinement cycles, a resumed run) are built from them, and
+    /// the checksum is theirs.
+    std::string mesh_bytes;
+    /// The mesh built from them by parse_parameters(), until the first
+    /// create_coarse_mesh() takes it (a later call builds it again).
     std::shared_ptr<Triangulation<dim>> file_mesh;
   };
 } // namespace VPContact

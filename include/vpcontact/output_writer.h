@@ -52,6 +52,14 @@ namespace VPContact
     prepare_directory(const MPI_Comm communicator) const;
 
     /**
+     * Throw, naming Output/Directory and the first rank that does not see
+     * the folder rank 0 prepared, if fields are written and a rank cannot
+     * see it (collective).
+     */
+    void
+    check_seen_by_all_ranks(const MPI_Comm communicator) const;
+
+    /**
      * The files and folders in Output/Directory that this run would
      * replace although vpcontact did not write them: those with the names
      * of its outputs, in a folder without the output marker. Serial.

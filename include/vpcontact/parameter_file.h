@@ -6,6 +6,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <mpi.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +41,16 @@ namespace VPContact
    */
   ParameterFile
   read_parameter_file(const std::string &filename);
+
+  /**
+   * The same, read by rank 0 of @p communicator alone: every rank gets its
+   * text (and the origins of its lines), so that all ranks run the same
+   * scene even where their working directories hold different copies of
+   * the file or none, and all stop together with rank 0's message when it
+   * cannot read it. Collective.
+   */
+  ParameterFile
+  read_parameter_file(const std::string &filename, const MPI_Comm communicator);
 
   /**
    * The magnitudes this program accepts for a real number in a parameter

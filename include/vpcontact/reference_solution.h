@@ -163,16 +163,18 @@ namespace VPContact
     void
     write(const Snapshot<dim> &local, const MPI_Comm communicator);
 
-    /// Read the reference index (once, before the first comparison).
+    /// Read the reference index (once, before the first comparison), on
+    /// rank 0 of @p communicator for all ranks (collective).
     void
-    read_index();
+    read_index(const MPI_Comm communicator);
     /// Whether the reference has a snapshot at time @p t.
     bool
     has_time(const double t) const;
-    /// The reference snapshot at time @p t (has_time(t) must hold).
+    /// The reference snapshot at time @p t (has_time(t) must hold), read
+    /// on rank 0 of @p communicator for all ranks (collective).
     template <int dim>
     Snapshot<dim>
-    read(const double t) const;
+    read(const double t, const MPI_Comm communicator) const;
     /// The folder compared with, for messages.
     const std::string &
     comparison_folder() const;

@@ -167,7 +167,9 @@ namespace VPContact
                         CheckpointState   &state)
   {
     Geometry<2> geometry;
-    geometry.parse_parameters(prm, SOURCE_DIR "/../../prm");
+    geometry.parse_parameters(prm,
+                              SOURCE_DIR "/../../prm",
+                              state.triangulation.get_communicator());
     geometry.create_coarse_mesh(state.triangulation);
     state.triangulation.load(folder + "/mesh");
     state.dof_handler.distribute_dofs(state.fe);

@@ -6,8 +6,9 @@
 // held ones. The masked CG must return x* (K_FF x_F = b_F has the unique
 // solution x*_F), with the held entries exactly zero, for both
 // preconditioners (incomplete Cholesky and AMG) of both packages (Trilinos and
-// PETSc), from a zero start vector and from x* itself, for three held sets in
-// turn (x < 0.4, 0.6, 0.1) with the same preconditioner. The same on 2 ranks.
+// PETSc), from a zero start vector and from x* itself, for five held sets in
+// turn (x < 0.4, 0.6, 0.1, and y < 0.25, y > 0.51, which lie on part of the
+// ranks only) with the same preconditioner. The same on 2 and 3 ranks.
 #include <vpcontact/damage_system.h>
 #include <vpcontact/linear_solver.h>
 
@@ -23,6 +24,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <tuple>
 
 using namespace VPContact;
 
@@ -99,11 +101,24 @@ main(int argc, char **argv)
         assemble(dof_handler, system);
         system.initialize_preconditioner();
 
-        // Three held sets in turn, with the same preconditioner: x < 0.4,
-        // x < 0.6 and x < 0.1. For each, x*: 0 on the held nodes, smooth and
-        // nonzero elsewhere.
-        for (const double threshold : {0.4, 0.6, 0.1})
+        // Five held sets in turn, with the same preconditioner: x < 0.4,
+        // x < 0.6, x < 0.1, y < 0.25 and y > 0.51. For each, x*: 0 on the
+        // held nodes, smooth and nonzero elsewhere. The mesh's 144 coarse
+        // cells are split among the ranks in rows of y, so that on 2 and 3
+        // ranks the last two sets lie in part of the ranks only: y < 0.25
+        // on the first rank alone, and y > 0.51 covers every node of the
+        // last rank and none of the first (which must still take part in
+        // every collective call of the solve).
+        for (const auto &[axis, threshold, below] :
+             {std::make_tuple(0u, 0.4, true),
+              std::make_tuple(0u, 0.6, true),
+              std::make_tuple(0u, 0.1, true),
+              std::make_tuple(1u, 0.25, true),
+              std::make_tuple(1u, 0.51, false)})
           {
+            const auto is_held = [&](const Point<2> &p) {
+              return below ? p[axis] < threshold : p[axis] > threshold;
+            };
             TrilinosWrappers::MPI::Vector        exact(system.owned(), comm);
             std::vector<unsigned int>            held;
             std::vector<types::global_dof_index> indices;
@@ -116,7 +131,7 @@ main(int argc, char **argv)
                       {
                         const Point<2> p = cell->vertex(v);
                         exact(indices[v])
-                          = (p[0] < threshold ?
+                          = (is_held(p) ?
                                0. :
                                1. + std::sin(3. * p[0]) * std::cos(2. * p[1]));
                       }
@@ -136,7 +151,9 @@ main(int argc, char **argv)
             if (Utilities::MPI::this_mpi_process(comm) == 0)
               std::cout << package << ", " << preconditioner << ": "
                         << system.owned().size() << " damage dofs, " << n_held
-                        << " held (x < " << threshold << ")" << std::endl;
+                        << " held (" << (axis == 0 ? "x" : "y")
+                        << (below ? " < " : " > ") << threshold << ")"
+                        << std::endl;
             for (const bool from_exact : {false, true})
               {
                 if (!from_exact)
