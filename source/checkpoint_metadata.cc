@@ -16,9 +16,11 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
+#include <vector>
 
 namespace VPContact
 {
@@ -119,6 +121,89 @@ namespace VPContact
                   dealii::ExcMessage("Cannot flush " + path
                                      + " to disk (disk full or I/O error?)."));
     }
+
+    // The names of the files the manifest of @p folder lists (none if it
+    // has no manifest).
+    std::set<std::string>
+    listed_files(const std::string &folder)
+    {
+      std::set<std::string> names;
+      std::ifstream         in(folder + "/" + CheckpointManifest::filename);
+      for (std::string line; std::getline(in, line);)
+        {
+          std::istringstream words(line);
+          std::string        size, checksum, name;
+          if (!line.empty() && line[0] != '#'
+              && (words >> size >> checksum >> name))
+            names.insert(name);
+        }
+      return names;
+    }
+
+    // "a, b and c".
+    std::string
+    name_list(const std::vector<std::string> &names)
+    {
+      std::string text;
+      for (unsigned int i = 0; i < names.size(); ++i)
+        text += (i == 0                ? "" :
+                 i + 1 == names.size() ? " and " :
+                                         ", ")
+                + names[i];
+      return text;
+    }
+
+    // The files of the checkpoint in @p folder that its manifest certifies,
+    // sorted (the manifest of a state is then the same). Throws if one
+    // named in @p expected_sizes does not have the size meant to be
+    // written, or if the folder holds a file the checkpoint did not write.
+    std::vector<std::string>
+    certified_files(const std::string                           &folder,
+                    const std::map<std::string, std::uintmax_t> &expected_sizes)
+    {
+      // A write that ran out of disk space may have ended short without an
+      // error on the way: a file that does not have the size it was meant
+      // to have is not certified.
+      for (const auto &[name, bytes] : expected_sizes)
+        {
+          std::error_code error;
+          const auto      size
+            = std::filesystem::file_size(folder + "/" + name, error);
+          AssertThrow(!error && size == bytes,
+                      dealii::ExcMessage(
+                        "the checkpoint file " + folder + "/" + name + " has "
+                        + (error ? std::string("not been written") :
+                                   std::to_string(size) + " bytes")
+                        + ", " + std::to_string(bytes)
+                        + " were meant to be written (disk full?)."));
+        }
+
+      // The manifest lists the files the checkpoint wrote, and only those:
+      // a file of the user's is never certified, and so never removed with
+      // the checkpoint.
+      std::vector<std::string> foreign;
+      for (const auto &name : CheckpointManifest::foreign_files(folder))
+        if (expected_sizes.count(name) == 0)
+          foreign.push_back(name);
+      AssertThrow(foreign.empty(),
+                  dealii::ExcMessage(
+                    folder + " holds " + name_list(foreign)
+                    + ", which the checkpoint did not write. Move "
+                    + (foreign.size() == 1 ? "it" : "them")
+                    + " out of the checkpoint folder."));
+      std::vector<std::string> names;
+      for (const auto &entry : std::filesystem::directory_iterator(folder))
+        {
+          const std::string name = entry.path().filename().string();
+          if (entry.is_regular_file() && name != CheckpointManifest::filename
+              && name.find(".tmp") == std::string::npos
+              && (CheckpointManifest::is_checkpoint_file(name)
+                  || expected_sizes.count(name) > 0))
+            names.push_back(name);
+        }
+      std::sort(names.begin(), names.end());
+      return names;
+    }
   } // namespace
 
 
@@ -144,6 +229,7 @@ namespace VPContact
         outputs.push_back({"", entry});
       }
     tree.add_child("field outputs", outputs);
+    tree.put("output directory", output_directory);
     tree.add_child("counters", literal_tree(counters));
     tree.add_child("parameters", literal_tree(parameters));
     tree.put("statistics", statistics_csv);
@@ -188,6 +274,9 @@ namespace VPContact
           metadata.field_outputs.emplace_back(to_double(
                                                 child(entry, "time").data()),
                                               child(entry, "file").data());
+        // Absent in checkpoints of versions before it was recorded.
+        metadata.output_directory
+          = tree.get<std::string>("output directory", "");
         for (const auto &[key, entry] : child(tree, "counters"))
           metadata.counters[key] = to_double(entry.data());
         for (const auto &[key, entry] : child(tree, "parameters"))
@@ -213,30 +302,8 @@ namespace VPContact
     write(const std::string                           &folder,
           const std::map<std::string, std::uintmax_t> &expected_sizes)
     {
-      // A write that ran out of disk space may have ended short without an
-      // error on the way: a file that does not have the size it was meant
-      // to have is not certified.
-      for (const auto &[name, bytes] : expected_sizes)
-        {
-          std::error_code error;
-          const auto      size
-            = std::filesystem::file_size(folder + "/" + name, error);
-          AssertThrow(!error && size == bytes,
-                      dealii::ExcMessage(
-                        "the checkpoint file " + folder + "/" + name + " has "
-                        + (error ? std::string("not been written") :
-                                   std::to_string(size) + " bytes")
-                        + ", " + std::to_string(bytes)
-                        + " were meant to be written (disk full?)."));
-        }
-
-      // Sorted names, so that the manifest of the same state is the same.
-      std::vector<std::string> names;
-      for (const auto &entry : std::filesystem::directory_iterator(folder))
-        if (entry.is_regular_file()
-            && entry.path().filename().string() != filename)
-          names.push_back(entry.path().filename().string());
-      std::sort(names.begin(), names.end());
+      const std::vector<std::string> names
+        = certified_files(folder, expected_sizes);
 
       std::ostringstream manifest;
       manifest << "# vpcontact checkpoint manifest: size in bytes, CRC-32, "
@@ -309,6 +376,75 @@ namespace VPContact
       if (n_files == 0)
         return "its " + filename + " lists no files";
       return "";
+    }
+
+
+
+    bool
+    is_checkpoint_file(const std::string &name)
+    {
+      for (const std::string &own : {std::string("mesh"),
+                                     std::string("mesh.info"),
+                                     std::string("mesh_fixed.data"),
+                                     std::string("mesh_variable.data"),
+                                     std::string("checkpoint.json"),
+                                     filename,
+                                     marker})
+        if (name == own || name == own + ".tmp")
+          return true;
+      return false;
+    }
+
+
+
+    std::vector<std::string>
+    foreign_files(const std::string &folder)
+    {
+      std::vector<std::string> names;
+      std::error_code          error;
+      if (!std::filesystem::is_directory(folder, error))
+        return names;
+      const std::set<std::string> listed = listed_files(folder);
+      for (const auto &entry :
+           std::filesystem::directory_iterator(folder, error))
+        {
+          const std::string name = entry.path().filename().string();
+          if (!is_checkpoint_file(name) && listed.count(name) == 0)
+            names.push_back(name);
+        }
+      std::sort(names.begin(), names.end());
+      return names;
+    }
+
+
+
+    void
+    remove(const std::string &folder)
+    {
+      std::error_code error;
+      if (!std::filesystem::exists(folder, error))
+        return;
+      // The manifest goes last: until then the folder says what it holds.
+      std::set<std::string> names = listed_files(folder);
+      for (const auto &entry :
+           std::filesystem::directory_iterator(folder, error))
+        if (is_checkpoint_file(entry.path().filename().string()))
+          names.insert(entry.path().filename().string());
+      names.erase(filename);
+      for (const auto &name : names)
+        std::filesystem::remove(folder + "/" + name, error);
+      std::filesystem::remove(folder + "/" + filename, error);
+      // remove() takes a folder only when it is empty.
+      std::filesystem::remove(folder, error);
+      const std::vector<std::string> left = foreign_files(folder);
+      AssertThrow(!std::filesystem::exists(folder),
+                  dealii::ExcMessage(
+                    "cannot remove the checkpoint folder " + folder
+                    + (left.empty() ?
+                         " (" + error.message() + ")" :
+                         ": it holds " + name_list(left)
+                           + ", which vpcontact did not write and leaves "
+                             "as it is")));
     }
   } // namespace CheckpointManifest
 } // namespace VPContact

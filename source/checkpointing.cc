@@ -21,19 +21,6 @@ namespace VPContact
 {
   namespace
   {
-    // The one piece of global state a signal handler may touch: the number
-    // of the signal that arrived (an async-signal-safe store).
-    volatile std::sig_atomic_t stop_signal = 0;
-
-    void
-    record_stop_signal(const int signal)
-    {
-      stop_signal = signal;
-    }
-
-    // The marker of a checkpoint folder (see write_folder_marker()).
-    const std::string checkpoint_marker = ".vpcontact-checkpoint";
-
     // Whether @p folder is absent or a checkpoint folder of this program:
     // it carries the marker, or (written before markers existed) a manifest
     // of this program's format.
@@ -45,7 +32,7 @@ namespace VPContact
         return true;
       if (!std::filesystem::is_directory(folder, error))
         return false;
-      if (has_folder_marker(folder, checkpoint_marker))
+      if (has_folder_marker(folder, CheckpointManifest::marker))
         return true;
       std::ifstream in(folder + "/" + CheckpointManifest::filename);
       std::string   first_line;
@@ -175,62 +162,6 @@ namespace VPContact
 
 
 
-  StopSignalCatcher::StopSignalCatcher()
-  {
-    stop_signal = 0;
-    for (unsigned int i = 0; i < signals.size(); ++i)
-      {
-        sigaction(signals[i], nullptr, &previous[i]);
-        if (previous[i].sa_handler == SIG_IGN)
-          continue;
-        struct sigaction action = {};
-        action.sa_handler       = record_stop_signal;
-        sigemptyset(&action.sa_mask);
-        // SA_RESTART: a system call that the signal interrupts (MPI, file
-        // output) continues; SA_RESETHAND: the next signal acts as usual.
-        action.sa_flags = SA_RESTART | SA_RESETHAND;
-        installed[i]    = (sigaction(signals[i], &action, nullptr) == 0);
-      }
-  }
-
-
-
-  StopSignalCatcher::~StopSignalCatcher()
-  {
-    for (unsigned int i = 0; i < signals.size(); ++i)
-      if (installed[i])
-        sigaction(signals[i], &previous[i], nullptr);
-    stop_signal = 0;
-  }
-
-
-
-  int
-  StopSignalCatcher::caught_signal()
-  {
-    return stop_signal;
-  }
-
-
-
-  std::string
-  StopSignalCatcher::name(const int signal)
-  {
-    switch (signal)
-      {
-        case SIGINT:
-          return "SIGINT";
-        case SIGTERM:
-          return "SIGTERM";
-        case SIGUSR1:
-          return "SIGUSR1";
-        default:
-          return "signal " + std::to_string(signal);
-      }
-  }
-
-
-
   void
   Checkpointing::declare_parameters(ParameterHandler &prm)
   {
@@ -252,10 +183,12 @@ namespace VPContact
       prm.declare_entry("Stop on signal",
                         "true",
                         Patterns::Bool(),
-                        "On SIGINT (Ctrl-C), SIGTERM (kill, queue systems) or "
+                        "On SIGINT (Ctrl-C), SIGTERM (kill, queue systems), "
                         "SIGUSR1 (which Open MPI's mpirun forwards to the "
-                        "ranks), finish the current step, write a checkpoint "
-                        "and stop with exit status 75; a second signal stops "
+                        "ranks) or SIGPIPE (the screen output piped into a "
+                        "program that has ended, e.g. head), finish the "
+                        "current step, write a checkpoint and stop with exit "
+                        "status 75; a second SIGINT, SIGTERM or SIGUSR1 stops "
                         "at once. false: the signals act as usual.");
       prm.declare_entry("Resume from checkpoint",
                         "false",
@@ -284,7 +217,7 @@ namespace VPContact
   Checkpointing::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    const std::string output_directory = prm.get("Directory");
+    output_directory = prm.get("Directory");
     prm.leave_subsection();
     prm.enter_subsection("Checkpoint");
     every_steps       = prm.get_integer("Every steps");
@@ -293,6 +226,7 @@ namespace VPContact
     resume_run        = prm.get_bool("Resume from checkpoint");
     checkpoint_folder = prm.get("Folder");
     prm.leave_subsection();
+    folder_set_by_user = !checkpoint_folder.empty();
     if (checkpoint_folder.empty())
       checkpoint_folder = output_directory + "/checkpoint";
     // "ck/." and "a/.." name the folders "ck" and "." (whose .new would
@@ -301,6 +235,8 @@ namespace VPContact
       = std::filesystem::path(checkpoint_folder).lexically_normal().string();
     while (checkpoint_folder.size() > 1 && checkpoint_folder.back() == '/')
       checkpoint_folder.pop_back();
+    if (folder_set_by_user)
+      check_path_length("Checkpoint/Folder", checkpoint_folder);
 
     parameters.clear();
     for (const auto &[entry, value] : parameter_values(prm))
@@ -381,8 +317,11 @@ namespace VPContact
     Decision decision;
     decision.signal = global[0];
     decision.stop   = (decision.signal != 0 && n < n_steps);
-    decision.write  = decision.stop || global[1] == 1
-                     || (every_steps > 0 && n % every_steps == 0);
+    // With Every steps the last step is written too, so that a finished
+    // run can be continued to a later end time.
+    decision.write
+      = decision.stop || global[1] == 1
+        || (every_steps > 0 && (n % every_steps == 0 || n == n_steps));
     return decision;
   }
 
@@ -391,16 +330,50 @@ namespace VPContact
   std::string
   Checkpointing::ownership_problem() const
   {
+    const std::string remedy
+      = folder_set_by_user ?
+          "Choose another Checkpoint/Folder" :
+          "Choose another Output/Directory, or set Checkpoint/Folder";
     for (const std::string suffix : {"", ".new", ".old"})
-      if (!absent_or_own(checkpoint_folder + suffix))
-        return checkpoint_folder + suffix
-               + " exists and is not a checkpoint folder of vpcontact (it has "
-                 "no "
-               + checkpoint_marker
-               + " file). The program replaces and removes only folders it "
-                 "made. Choose another Checkpoint/Folder, or move that one "
-                 "away.";
+      {
+        const std::string folder = checkpoint_folder + suffix;
+        if (!absent_or_own(folder))
+          return folder
+                 + " exists and is not a checkpoint folder of vpcontact (it "
+                   "has no "
+                 + CheckpointManifest::marker
+                 + " file). The program replaces and removes only folders "
+                   "it made. "
+                 + remedy + ", or move that one away.";
+        // The rotation removes and renames the folder: a file in it that
+        // no checkpoint wrote would go with it.
+        const std::vector<std::string> foreign
+          = CheckpointManifest::foreign_files(folder);
+        if (!foreign.empty())
+          return folder + " holds " + foreign[0]
+                 + (foreign.size() > 1 ?
+                      " (and " + std::to_string(foreign.size() - 1) + " more)" :
+                      std::string())
+                 + ", which vpcontact did not write: a checkpoint folder "
+                   "holds only the files of its checkpoint, and the "
+                   "checkpoint rotation removes it. Move "
+                 + foreign[0] + " out of " + folder + ". " + remedy
+                 + " if that folder is not for checkpoints.";
+      }
     return "";
+  }
+
+
+
+  std::string
+  Checkpointing::folder_entry() const
+  {
+    // The entry the user set: Checkpoint/Folder, or Output/Directory, of
+    // which the default checkpoint folder is a part.
+    if (folder_set_by_user)
+      return parameter_message("Checkpoint/Folder", checkpoint_folder, "");
+    return "Output/Directory = " + output_directory + " (its checkpoints go to "
+           + checkpoint_folder + "): ";
   }
 
 
@@ -456,10 +429,7 @@ namespace VPContact
       close(fd);
       std::filesystem::remove(probe);
     });
-    AssertThrow(problem.empty(),
-                ExcMessage(parameter_message("Checkpoint/Folder",
-                                             checkpoint_folder,
-                                             problem)));
+    AssertThrow(problem.empty(), ExcMessage(folder_entry() + problem));
   }
 
 
@@ -472,10 +442,11 @@ namespace VPContact
     const std::string problem    = problem_on_rank_zero(communicator, [&]() {
       const std::string ownership = ownership_problem();
       AssertThrow(ownership.empty(), ExcMessage(ownership));
-      // A leftover of a run that stopped while writing is incomplete.
-      std::filesystem::remove_all(new_folder);
+      // A leftover of a run that stopped while writing is incomplete; its
+      // files, and only those, go.
+      CheckpointManifest::remove(new_folder);
       std::filesystem::create_directories(new_folder);
-      write_folder_marker(new_folder, checkpoint_marker);
+      write_folder_marker(new_folder, CheckpointManifest::marker);
       // p4est ends the program without a message when a write fails: a
       // checkpoint is written only where it fits, with room to spare.
       const auto space = std::filesystem::space(new_folder);
@@ -512,7 +483,7 @@ namespace VPContact
       // may the one before the previous go, if it is still this program's.
       const std::string ownership = ownership_problem();
       AssertThrow(ownership.empty(), ExcMessage(ownership));
-      std::filesystem::remove_all(old_folder);
+      CheckpointManifest::remove(old_folder);
       if (std::filesystem::exists(checkpoint_folder))
         std::filesystem::rename(checkpoint_folder, old_folder);
       std::filesystem::rename(new_folder, checkpoint_folder);

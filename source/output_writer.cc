@@ -1,17 +1,41 @@
 // The section "Output" and the files of a run: fields, time series, table.
 #include <vpcontact/input_error.h>
 #include <vpcontact/output_writer.h>
+#include <vpcontact/resumed_field_outputs.h>
 
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <boost/serialization/utility.hpp>
+#include <climits>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <sstream>
 
 namespace VPContact
 {
+  namespace
+  {
+    // The longest path this program writes below an output folder
+    // (e.g. checkpoint.new/.vpcontact-checkpoint.tmp) is shorter than this.
+    constexpr std::size_t longest_inner_path = 64;
+
+    // A value of a few thousand characters, shortened for a message.
+    std::string
+    abbreviated(const std::string &value)
+    {
+      if (value.size() <= 80)
+        return value;
+      return value.substr(0, 40) + "..." + value.substr(value.size() - 20)
+             + " (" + std::to_string(value.size()) + " characters)";
+    }
+
+  } // namespace
+
+
+
   void
   write_file_atomically(const std::string &filename, const std::string &content)
   {
@@ -165,6 +189,7 @@ namespace VPContact
                             "Output/Directory",
                             "(empty)",
                             "give a folder name, e.g. 'results'.");
+    check_path_length("Output/Directory", output_directory);
     base_directory_name = output_directory;
   }
 
@@ -172,7 +197,7 @@ namespace VPContact
 
   template <int dim>
   void
-  OutputWriter<dim>::prepare_directory(const MPI_Comm communicator) const
+  OutputWriter<dim>::prepare_directory(const MPI_Comm communicator)
   {
     // Only rank 0 touches the file system here; every rank gets its
     // verdict, so that all stop together, with the same message.
@@ -189,21 +214,27 @@ namespace VPContact
                                "folder has no "
                              + output_folder_marker
                              + " file). Choose another folder, or move them "
-                               "away"));
+                               "away."));
       std::error_code error;
       std::filesystem::create_directories(output_directory, error);
       AssertThrow(!error,
                   ExcMessage("cannot create this folder (" + error.message()
-                             + ")"));
+                             + "). Give a folder that can be created and "
+                               "written."));
+      // The folder is this run's from here to its end, before anything is
+      // written into it.
+      lock = std::make_unique<FolderLock>(output_directory + "/"
+                                            + output_folder_lock,
+                                          "this folder");
+      if (!lock->note().empty())
+        std::cerr << "Note: " << lock->note() << std::endl;
       // The marker doubles as the test that the folder can be written.
       write_folder_marker(output_directory, output_folder_marker);
     });
-    VPContactCheckParameter(problem.empty(),
-                            "Output/Directory",
-                            output_directory,
-                            problem
-                              + ". Give a folder that can be created "
-                                "and written.");
+    AssertThrow(problem.empty(),
+                ExcMessage(parameter_message("Output/Directory",
+                                             output_directory,
+                                             problem)));
     check_seen_by_all_ranks(communicator);
   }
 
@@ -403,14 +434,25 @@ namespace VPContact
 
 
   template <int dim>
-  void
-  OutputWriter<dim>::restore_field_outputs(
-    const std::vector<std::pair<double, std::string>> &outputs,
-    const MPI_Comm                                     communicator)
+  std::string
+  OutputWriter<dim>::restore_field_outputs(const FieldOutputRecord &outputs,
+                                           const std::string       &folder,
+                                           const MPI_Comm communicator)
   {
-    times_and_names = outputs;
-    if (!times_and_names.empty())
+    // The record must list files of this folder, and only complete ones.
+    std::pair<FieldOutputRecord, std::string> kept;
+    const std::string problem = problem_on_rank_zero(communicator, [&]() {
+      kept = bring_field_outputs(outputs, folder, output_directory);
+    });
+    AssertThrow(problem.empty(),
+                ExcMessage(parameter_message("Output/Directory",
+                                             output_directory,
+                                             problem)));
+    kept            = Utilities::MPI::broadcast(communicator, kept, 0);
+    times_and_names = kept.first;
+    if (!outputs.empty())
       write_pvd_record(communicator);
+    return kept.second;
   }
 
 
@@ -474,6 +516,31 @@ namespace VPContact
       = (subfolder.empty() ? base_directory_name :
                              base_directory_name + "/" + subfolder);
     times_and_names.clear();
+  }
+
+
+
+  void
+  check_path_length(const std::string &entry, const std::string &folder)
+  {
+    // PATH_MAX counts the terminating NUL.
+    const std::size_t limit = PATH_MAX - 1;
+    AssertThrow(folder.size() + longest_inner_path <= limit,
+                ExcMessage(parameter_message(
+                  entry,
+                  abbreviated(folder),
+                  "the files the run writes in this folder have paths of "
+                  "up to "
+                    + std::to_string(longest_inner_path)
+                    + " characters more (e.g. "
+                      "checkpoint.new/mesh_fixed.data), beyond the "
+                      "system's limit of "
+                    + std::to_string(limit)
+                    + " characters for a path (PATH_MAX). Give a path of at "
+                      "most "
+                    + std::to_string(limit - longest_inner_path)
+                    + " characters: a relative path, or a symbolic link to "
+                      "the folder, is shorter.")));
   }
 
 

@@ -8,6 +8,9 @@
 #include <deal.II/distributed/tria.h>
 
 #include <array>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
 
 namespace VPContact
 {
@@ -93,7 +96,12 @@ namespace VPContact
     // The checkpoint lists the field outputs on disk: the last one must be.
     output_writer.finish_field_output(mpi_communicator);
     metadata.field_outputs = output_writer.field_outputs();
-    metadata.counters      = verification.running_maxima();
+    // Where they are: a run resumed into another folder brings them.
+    metadata.output_directory
+      = std::filesystem::absolute(output_writer.directory())
+          .lexically_normal()
+          .string();
+    metadata.counters = verification.running_maxima();
     metadata.counters.insert(physics_counters.begin(), physics_counters.end());
     if (error_estimator.is_active())
       {
@@ -177,15 +185,26 @@ namespace VPContact
       return false;
 
     checkpointing.note_stopped_on_signal();
-    pcout << "\nStopped on " << StopSignalCatcher::name(decision.signal)
-          << " at the end of step " << n << " of "
-          << time_discretization.n_steps()
-          << " (t = " << time_discretization.time(n) << "); the checkpoint in "
-          << checkpointing.folder()
-          << " holds this state.\nTo continue the run, start it again with "
-             "--resume (vpcontact --resume SCENE.prm) or with "
-             "Checkpoint/Resume from checkpoint = true. Exit status "
-          << exit_status_stopped_for_resume << '.' << std::endl;
+    std::ostringstream message;
+    message << "\nStopped on " << StopSignalCatcher::name(decision.signal)
+            << " at the end of step " << n << " of "
+            << time_discretization.n_steps()
+            << " (t = " << time_discretization.time(n)
+            << "); the checkpoint in " << checkpointing.folder()
+            << " holds this state.\nTo continue the run, start it again with "
+               "--resume (vpcontact --resume SCENE.prm) or with "
+               "Checkpoint/Resume from checkpoint = true. Exit status "
+            << exit_status_stopped_for_resume << '.' << std::endl;
+    // With the reader of the screen output gone (a pipe into head), the
+    // error output is where this can still be read.
+    if (StopSignalCatcher::output_pipe_broken())
+      {
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          std::cerr << "\nThe screen output (a pipe) lost its reader."
+                    << message.str() << std::flush;
+      }
+    else
+      pcout << message.str() << std::flush;
     return true;
   }
 
@@ -328,8 +347,9 @@ namespace VPContact
   {
     statistics.read_csv(checkpoint.statistics_csv);
     output_writer.write_statistics(statistics, mpi_communicator);
-    output_writer.restore_field_outputs(checkpoint.field_outputs,
-                                        mpi_communicator);
+    pcout << output_writer.restore_field_outputs(checkpoint.field_outputs,
+                                                 checkpoint.output_directory,
+                                                 mpi_communicator);
     verification.restore_running_maxima(checkpoint.counters);
     if (error_estimator.is_active())
       error_estimator.restore_running_maxima(checkpoint.counters);

@@ -40,6 +40,12 @@ namespace VPContact
     std::string statistics_csv;
     /// (time, .pvtu file) of every field output so far: the .pvd record.
     std::vector<std::pair<double, std::string>> field_outputs;
+    /**
+     * The folder those field outputs are in, an absolute path (empty in
+     * checkpoints of versions before it was recorded): a run resumed into
+     * another Output/Directory brings them from there.
+     */
+    std::string output_directory;
     /// Running extremes that the end-of-run summary reports, by name.
     std::map<std::string, double> counters;
     /**
@@ -73,11 +79,47 @@ namespace VPContact
     inline const std::string filename = "manifest.txt";
 
     /**
-     * Flush every regular file of @p folder to disk, write the manifest of
-     * them and flush it and the folder. Throws with the file's name if a
-     * file cannot be read or written, or if a file named in
+     * The marker of a checkpoint folder (see write_folder_marker()): the
+     * program replaces and removes only folders that carry it.
+     */
+    inline const std::string marker = ".vpcontact-checkpoint";
+
+    /**
+     * Whether @p name is a file that a checkpoint of the simulator writes:
+     * the mesh and its cell data (CheckpointFields::save() with the name
+     * "mesh"), checkpoint.json, the manifest and the marker, and the
+     * temporary files they are written through. A checkpoint folder holds
+     * nothing else, except files that its manifest lists.
+     */
+    bool
+    is_checkpoint_file(const std::string &name);
+
+    /**
+     * The entries of @p folder that a checkpoint did not write: neither
+     * listed in its manifest nor checkpoint files (is_checkpoint_file()).
+     * Those are the user's, and a folder holding one is neither removed
+     * nor renamed. Serial.
+     */
+    std::vector<std::string>
+    foreign_files(const std::string &folder);
+
+    /**
+     * Remove the files of the checkpoint in @p folder, those its manifest
+     * lists and the checkpoint files, then the folder if that left it
+     * empty. Never removes another file; throws, naming them, if any is
+     * left. Serial.
+     */
+    void
+    remove(const std::string &folder);
+
+    /**
+     * Flush the files of the checkpoint in @p folder to disk (the
+     * checkpoint files and those named in @p expected_sizes), write the
+     * manifest of them and flush it and the folder. Throws with the file's
+     * name if a file cannot be read or written, if a file named in
      * @p expected_sizes does not have the size recorded there (what was
-     * meant to be written). Serial: call on one rank.
+     * meant to be written), or if the folder holds a file the checkpoint
+     * did not write. Serial: call on one rank.
      */
     void
     write(const std::string                           &folder,

@@ -4,14 +4,13 @@
 #define vpcontact_checkpointing_h
 
 #include <vpcontact/checkpoint_metadata.h>
+#include <vpcontact/stop_signal_catcher.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <array>
 #include <chrono>
-#include <csignal>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -20,50 +19,6 @@
 namespace VPContact
 {
   using namespace dealii;
-
-  /**
-   * The exit status of a run that stopped on a signal after writing a
-   * checkpoint: 75, EX_TEMPFAIL of sysexits.h ("temporary failure; the user
-   * is invited to retry"), so that a job script can tell "resume me" from
-   * success (0) and from an error (1).
-   */
-  constexpr int exit_status_stopped_for_resume = 75;
-
-  /**
-   * While an object of this class exists, SIGINT, SIGTERM and SIGUSR1 do
-   * not end the program: they only record that a stop was asked for, and
-   * the time loop stops cleanly at the end of the current step, after
-   * writing a checkpoint. A second signal of the same kind ends the program
-   * at once (the handler is reset to the default after the first one), so
-   * that a user who presses Ctrl-C twice is not kept waiting. A signal that
-   * was ignored when the object was made (nohup) stays ignored. The
-   * destructor restores the previous handlers and forgets the signal.
-   */
-  class StopSignalCatcher
-  {
-  public:
-    StopSignalCatcher();
-    ~StopSignalCatcher();
-    StopSignalCatcher(const StopSignalCatcher &) = delete;
-    StopSignalCatcher &
-    operator=(const StopSignalCatcher &)
-      = delete;
-
-    /// The signal that arrived on this rank, or 0.
-    static int
-    caught_signal();
-
-    /// "SIGTERM" and so on.
-    static std::string
-    name(const int signal);
-
-  private:
-    static constexpr std::array<int, 3> signals = {{SIGINT, SIGTERM, SIGUSR1}};
-    std::array<struct sigaction, 3>     previous;
-    std::array<bool, 3>                 installed = {{false, false, false}};
-  };
-
-
 
   /**
    * Section "Checkpoint". A checkpoint is the folder Checkpoint/Folder
@@ -205,9 +160,22 @@ namespace VPContact
     check_compatibility(const CheckpointMetadata &metadata) const;
 
   private:
-    /// Why FOLDER, FOLDER.new or FOLDER.old may not be touched, or "".
+    /**
+     * Why FOLDER, FOLDER.new or FOLDER.old may not be touched, or "": one
+     * of them is not a checkpoint folder of this program, or holds a file
+     * that no checkpoint wrote.
+     */
     std::string
     ownership_problem() const;
+
+    /**
+     * "Checkpoint/Folder = FOLDER: ", or, where the user left it empty,
+     * "Output/Directory = DIR (its checkpoints go to DIR/checkpoint): ": the
+     * start of a message about the checkpoint folder, naming the entry the
+     * user set.
+     */
+    std::string
+    folder_entry() const;
 
     unsigned int every_steps       = 0;
     double       every_seconds     = 0;
@@ -215,6 +183,9 @@ namespace VPContact
     bool         catch_signals     = true;
     bool         stopped_on_signal = false;
     std::string  checkpoint_folder;
+    /// Whether Checkpoint/Folder was set (else it derives from the next).
+    bool        folder_set_by_user = false;
+    std::string output_directory;
 
     std::map<std::string, std::string>    parameters;
     std::chrono::steady_clock::time_point last_checkpoint

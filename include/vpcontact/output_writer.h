@@ -4,6 +4,7 @@
 #define vpcontact_output_writer_h
 
 #include <vpcontact/field_writer.h>
+#include <vpcontact/folder_lock.h>
 #include <vpcontact/statistics.h>
 
 #include <deal.II/base/mpi.h>
@@ -11,6 +12,7 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -45,11 +47,13 @@ namespace VPContact
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * Create the output folder and check that it can be written, on rank 0,
-     * and tell every rank. Throws with a message naming Output/Directory.
+     * Create the output folder, claim it for this run (a FolderLock held
+     * until this object is destroyed) and check that it can be written, on
+     * rank 0, and tell every rank. Throws with a message naming
+     * Output/Directory, also when another run holds the folder.
      */
     void
-    prepare_directory(const MPI_Comm communicator) const;
+    prepare_directory(const MPI_Comm communicator);
 
     /**
      * Throw, naming Output/Directory and the first rank that does not see
@@ -134,11 +138,18 @@ namespace VPContact
     /**
      * A resumed run: take the field outputs of the checkpoint and rewrite
      * the .pvd record with them (rank 0), dropping any step written after
-     * the checkpoint by the run that stopped.
+     * the checkpoint by the run that stopped. @p folder is where the
+     * checkpointed run wrote them (CheckpointMetadata::output_directory):
+     * if that is another folder, the .pvtu records and .vtu pieces are
+     * brought into this one (hard links, else copies), so that the record
+     * lists files of this folder; an output whose files are missing is left
+     * out of the record. Returns a note for the screen saying what was
+     * brought or left out, or "".
      */
-    void
+    std::string
     restore_field_outputs(
       const std::vector<std::pair<double, std::string>> &outputs,
+      const std::string                                 &folder,
       const MPI_Comm                                     communicator);
 
   private:
@@ -172,6 +183,9 @@ namespace VPContact
     /// The flags of every .vtu and .pvtu file.
     DataOutBase::VtkFlags vtk_flags;
 
+    /// The claim on the output folder (rank 0), from prepare_directory().
+    std::unique_ptr<FolderLock> lock;
+
     FieldWriter<dim>             field_writer;
     std::optional<PendingOutput> pending_output;
 
@@ -203,6 +217,16 @@ namespace VPContact
 
   /// The marker of an output folder.
   inline const std::string output_folder_marker = ".vpcontact-output";
+
+  /// The lock file of an output folder (see FolderLock).
+  inline const std::string output_folder_lock = ".vpcontact-lock";
+
+  /**
+   * Throw a message naming @p entry if the files this program writes below
+   * @p folder would have paths longer than the system takes (PATH_MAX).
+   */
+  void
+  check_path_length(const std::string &entry, const std::string &folder);
 
   /**
    * Run @p task on rank 0 of @p communicator only and return, on every
