@@ -4,6 +4,7 @@
 #include <vpcontact/input_error.h>
 #include <vpcontact/parameter_file.h>
 #include <vpcontact/parameter_listing.h>
+#include <vpcontact/petsc_tools.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/mpi.h>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
+#include <cstdlib>
 #include <dlfcn.h>
 #include <filesystem>
 #include <fstream>
@@ -121,6 +123,23 @@ namespace VPContact
       std::cout << "# All parameters of vpcontact for a " << dim
                 << "D scene, with their defaults.\n";
       print_parameter_listing(prm, std::cout);
+    }
+
+
+
+    // PETSc starts inside MPI_InitFinalize and aborts there on options it
+    // cannot read, so those are refused before; with no communicator yet,
+    // the rank is the one mpirun gives (Open MPI, MPICH).
+    int
+    report_error_before_mpi(const std::string &message)
+    {
+      const char *rank = std::getenv("OMPI_COMM_WORLD_RANK");
+      if (rank == nullptr)
+        rank = std::getenv("PMI_RANK");
+      if (rank == nullptr || std::string(rank) == "0")
+        std::cerr << "\nError: " << message << "\nStopped; exit status 1."
+                  << std::endl;
+      return 1;
     }
 
 
@@ -248,11 +267,16 @@ namespace VPContact
   int
   run_application(int argc, char **argv)
   {
+    // PETSc starts with MPI and reads PETSC_OPTIONS; its errors are told in
+    // one message of the program's (petsc_tools.h).
+    if (const std::string problem = petsc_options_problem(); !problem.empty())
+      return report_error_before_mpi(problem);
     // deal.II's threads: the cores of the node divided among its ranks
     // (DEAL_II_NUM_THREADS may lower it). The BLAS of the factorizations
     // gets as many, where it can start threads, instead of one per core in
     // every rank.
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
+    install_petsc_error_messages();
     set_blas_threads(MultithreadInfo::n_threads());
     const MPI_Comm communicator = MPI_COMM_WORLD;
     // Rank 0's command line for all ranks, as its parameter file: under

@@ -7,6 +7,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace VPContact
@@ -336,8 +337,9 @@ namespace VPContact
             r[d]  = residual(node.dofs[d]);
             du[d] = increment(node.dofs[d]);
           }
-        node.lambda = node.coordinates(r) / node.length;
-        node.slip   = node.coordinates(du);
+        node.lambda   = node.coordinates(r) / node.length;
+        node.traction = r.norm() / node.length;
+        node.slip     = node.coordinates(du);
 
         // c of the order of E/h, so that lambda and c w compare alike.
         const double c    = c_factor * youngs_modulus / node.length;
@@ -387,12 +389,32 @@ namespace VPContact
 
   template <int dim>
   double
+  FrictionActiveSet<dim>::max_bound() const
+  {
+    double g = 0;
+    for (const auto &node : nodes)
+      if (node.owned)
+        g = std::max(g, node.g);
+    return Utilities::MPI::max(g, communicator);
+  }
+
+
+
+  template <int dim>
+  double
   FrictionActiveSet<dim>::max_utilisation() const
   {
+    // A slip node uses its whole bound, by the law: its |lambda| differs
+    // from g by the round-off of the residual, which relative to a tiny g
+    // is any number (how far it is from g is max_violation()'s business).
+    // A stick node of a settled iteration has |lambda| <= g.
     double utilisation = 0;
     for (const auto &node : nodes)
       if (node.owned && node.g > 0)
-        utilisation = std::max(utilisation, node.lambda.norm() / node.g);
+        utilisation = std::max(utilisation,
+                               node.status == ContactStatus::slip ?
+                                 1. :
+                                 node.lambda.norm() / node.g);
     return Utilities::MPI::max(utilisation, communicator);
   }
 
@@ -402,15 +424,19 @@ namespace VPContact
   double
   FrictionActiveSet<dim>::max_violation(const double slip_tolerance) const
   {
-    double violation = 0, g_scale = 0, w_scale = 0;
+    // The violation is measured against the stresses it is computed from:
+    // lambda comes out of a residual whose round-off is relative to the
+    // contact traction, so with g far below |sigma nu| no solver gets
+    // |lambda| - g below round-off of g, though the answer is exact.
+    double violation = 0, stress_scale = 0, w_scale = 0;
     for (const auto &node : nodes)
       if (node.owned)
         {
-          g_scale = std::max(g_scale, node.g);
-          w_scale = std::max(w_scale, node.slip.norm());
+          stress_scale = std::max({stress_scale, node.g, node.traction});
+          w_scale      = std::max(w_scale, node.slip.norm());
         }
-    g_scale = Utilities::MPI::max(g_scale, communicator);
-    w_scale = Utilities::MPI::max(w_scale, communicator);
+    stress_scale = Utilities::MPI::max(stress_scale, communicator);
+    w_scale      = Utilities::MPI::max(w_scale, communicator);
     for (const auto &node : nodes)
       if (node.owned)
         {
@@ -421,7 +447,7 @@ namespace VPContact
                                  (node.lambda - node.g / w * node.slip).norm());
         }
     violation = Utilities::MPI::max(violation, communicator);
-    return g_scale > 0 ? violation / g_scale : violation;
+    return stress_scale > 0 ? violation / stress_scale : violation;
   }
 
 

@@ -142,6 +142,42 @@ namespace VPContact
 
 
   template <int dim>
+  void
+  FrictionProblem<dim>::set_motion_free_when_all_slip(const std::string &motion)
+  {
+    free_when_all_slip = motion;
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  FrictionProblem<dim>::motion_free_when_all_slip() const
+  {
+    return free_when_all_slip;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FrictionProblem<dim>::n_stick_nodes() const
+  {
+    return active_set.count().first;
+  }
+
+
+
+  template <int dim>
+  double
+  FrictionProblem<dim>::max_bound() const
+  {
+    return active_set.max_bound();
+  }
+
+
+
+  template <int dim>
   unsigned int
   FrictionProblem<dim>::iterations() const
   {

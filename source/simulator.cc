@@ -466,6 +466,8 @@ namespace VPContact
                                  [this](const auto &cells, auto &residual) {
                                    assemble_residual(cells, residual);
                                  });
+    if (changes.n_stick_changed > 0)
+      check_held_while_slipping(time);
     if (changes.n_changed == 0)
       return true;
     AssertThrow(
@@ -477,7 +479,11 @@ namespace VPContact
         + " contact node(s) still change set or slip direction. Raise Contact/Maximum active "
           "set iterations = "
         + std::to_string(friction.max_iterations())
-        + ", or try another Contact/Complementarity factor. The output up "
+        + ", try another Contact/Complementarity factor, or (3D) raise "
+          "Contact/Slip direction tolerance = "
+        + to_text(friction.direction_tolerance())
+        + " if a displacement solver's tolerance keeps the directions "
+          "from settling. The output up "
           "to the previous step is complete in "
         + output_writer.directory() + "."));
     if (changes.n_stick_changed > 0)

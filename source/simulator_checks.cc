@@ -1,8 +1,10 @@
 // The simulator's checks of the input that involve more than one section:
-// the stability of the explicit step, and what a mesh of triangles
-// (tetrahedra) cannot do.
+// the stability of the explicit step, what a mesh of triangles (tetrahedra)
+// cannot do, and a body that the slipping contact no longer holds.
 #include <vpcontact/input_error.h>
 #include <vpcontact/simulator.h>
+
+#include <cmath>
 
 namespace VPContact
 {
@@ -69,6 +71,41 @@ namespace VPContact
         + ". Set Checkpoint/Every steps = 0, Every seconds = 0 and Resume "
           "from checkpoint = false on a mesh of "
         + cells + ".");
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_held_while_slipping(const double time) const
+  {
+    // With no stick node left, the contact boundary holds the body only in
+    // its normal direction, and the friction force g on it is fixed: a
+    // rigid motion that the other constraints leave free is then free in
+    // the next solve too, whose matrix is singular and whose answer, if
+    // any, is a body that slides away. Stop before it, saying why.
+    const std::string &motion = friction_problem->motion_free_when_all_slip();
+    if (motion.empty() || friction_problem->n_stick_nodes() > 0)
+      return;
+    const double k = time_discretization.step_size();
+    AssertThrow(
+      false,
+      ExcMessage(
+        "At t = " + to_text(time) + " (step "
+        + std::to_string(static_cast<long>(std::lround(time / k)))
+        + ") every contact node slips: the friction bound "
+          "(Contact/Friction bound, at most "
+        + to_text(friction_problem->max_bound())
+        + " here) no longer holds the tangential load on the contact "
+          "boundary, and nothing else holds the body against "
+        + motion + " (Boundary conditions: " + boundary_conditions.summary()
+        + "). The body would slide away without bound, and the "
+          "quasistatic problem has no solution from here on. Raise "
+          "Contact/Friction bound, or hold the body against this motion "
+          "with a boundary of Boundary conditions/Clamped boundary ids, "
+          "Roller boundary ids or Prescribed displacement boundary ids. "
+          "The output up to the previous step is complete in "
+        + output_writer.directory() + "."));
   }
 
 

@@ -492,7 +492,7 @@ namespace VPContact
       pcout << "Tresca conditions at every contact node and step: largest "
                "violation "
             << format("%.1e", friction_problem->max_violation())
-            << " of max g (holds to 1e-8: "
+            << " of max(g, |sigma nu|) (holds to 1e-8: "
             << (friction_problem->max_violation() < 1e-8 ? "yes" : "NO")
             << ")\n";
     pcout << "Run complete: " << time_discretization.n_steps()

@@ -72,6 +72,9 @@ namespace VPContact
     // The contact nodes are read off the constraints without friction; the
     // sparsity pattern of the matrix, built with those, also holds every
     // pattern with more nodes constrained. All nodes start in the stick set.
+    // What these constraints leave free is what the body keeps once every
+    // contact node slips (check_held_while_slipping()).
+    const RigidMotionCheck<dim> rigid_motion_check(dof_handler);
     if (friction_problem)
       {
         friction_problem->setup(dof_handler,
@@ -79,13 +82,19 @@ namespace VPContact
                                 boundary_conditions.contact_boundary_ids(),
                                 locally_owned_dofs,
                                 locally_relevant_dofs);
+        const auto  free  = rigid_motion_check.free_motions(constraints);
+        const auto &parts = rigid_motion_check.parts();
+        friction_problem->set_motion_free_when_all_slip(
+          free.empty()         ? std::string() :
+          parts.n_parts() == 1 ? free.front().second :
+                                 free.front().second + " of "
+                                   + parts.description(free.front().first));
         make_constraints(0., nullptr);
       }
 
     // With all contact nodes in the stick set, the constraints now hold
-    // the body as firmly as they ever will.
-    check_rigid_motions_held(
-      dof_handler,
+    // the body, and each part of its mesh, as firmly as they ever will.
+    rigid_motion_check.assert_held(
       constraints,
       "Hold it with a boundary of Boundary conditions/Clamped boundary ids, "
       "Roller boundary ids or Prescribed displacement boundary ids, or with "

@@ -56,10 +56,13 @@ namespace VPContact
                         "1",
                         Patterns::Double(0),
                         "Scales c in the stick/slip test |lambda + c w| <= g; "
-                        "c = factor x (stiffness diagonal of the node) / "
-                        "(its boundary length), of the order of E/h. Any "
-                        "positive value gives the same solution; it can "
-                        "change the number of iterations. Must be positive.");
+                        "c = factor x (Young's modulus) / (the node's "
+                        "boundary length), of the order of the stiffness "
+                        "per node. In exact arithmetic any positive value "
+                        "gives the same solution and changes only the "
+                        "number of iterations; in floating point a factor "
+                        "far from 1 lets round-off in lambda or w decide the "
+                        "sets, so it must lie in [1e-6, 1e6].");
       prm.declare_entry("Slip direction tolerance",
                         "1e-10",
                         Patterns::Double(0),
@@ -69,8 +72,10 @@ namespace VPContact
                         "this; the friction law then holds to about this "
                         "fraction of g. Raise it if an iterative "
                         "displacement solver's tolerance keeps the "
-                        "directions from settling. (In 2D a direction only "
-                        "flips.)");
+                        "directions from settling. Must lie in [1e-14, "
+                        "1e-2]: below, round-off alone turns a direction; "
+                        "above, the law is not enforced. (In 2D a direction "
+                        "only flips.)");
     }
     prm.leave_subsection();
   }
@@ -88,10 +93,41 @@ namespace VPContact
     c_factor      = prm.get_double("Complementarity factor");
     direction_tol = prm.get_double("Slip direction tolerance");
     prm.leave_subsection();
-    VPContactCheckParameter(c_factor > 0,
-                            "Contact/Complementarity factor",
-                            c_factor,
-                            "the factor must be positive, e.g. 1.");
+    check_iteration_constants();
+  }
+
+
+
+  template <int dim>
+  void
+  TrescaFriction<dim>::check_iteration_constants() const
+  {
+    // c = factor E / m_i compares lambda with c w. The sets are the same
+    // for any c > 0 only in exact arithmetic: with a factor of 1e100, the
+    // round-off in w of a node that sticks makes c w larger than g, and with
+    // 1e-100 the slip of a node never counts; either way the iteration
+    // never settles or the matrix takes slip stiffnesses g c / (|z| - g)
+    // that no solver can invert. Six orders of magnitude either side of
+    // the stiffness per node leave the decisions to the physics.
+    VPContactCheckParameter(
+      c_factor >= 1e-6 && c_factor <= 1e6,
+      "Contact/Complementarity factor",
+      c_factor,
+      "the factor must lie in [1e-6, 1e6], e.g. 1: c = factor x E / (the "
+      "node's boundary length) compares the friction multiplier with the "
+      "stiffness times the slip, and a factor far outside this range lets "
+      "round-off decide which nodes stick.");
+    // A slip direction is a unit vector: its round-off is about 1e-16, and
+    // two directions differ by at most 2, so a tolerance of 2 or more
+    // accepts any direction and the friction law is not enforced at all.
+    VPContactCheckParameter(
+      direction_tol >= 1e-14 && direction_tol <= 1e-2,
+      "Contact/Slip direction tolerance",
+      direction_tol,
+      "the tolerance must lie in [1e-14, 1e-2], e.g. 1e-10: the friction "
+      "law holds to about this fraction of g, so a larger value leaves it "
+      "unenforced, and a smaller one is below the round-off of a unit "
+      "direction, which then never settles.");
   }
 
 

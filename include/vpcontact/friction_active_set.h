@@ -127,15 +127,23 @@ namespace VPContact
     std::pair<unsigned int, unsigned int>
     count() const;
 
-    /// max_i |lambda_i| / g_i over nodes with g_i > 0 (all ranks).
+    /// max_i g_i (all ranks).
+    double
+    max_bound() const;
+
+    /// max_i |lambda_i| / g_i over nodes with g_i > 0, 1 at slip nodes (all
+    /// ranks).
     double
     max_utilisation() const;
 
     /**
-     * The largest violation of the discrete Tresca conditions, relative to
-     * g: max over nodes of (|lambda_i| - g_i)^+ and, where |w_i| exceeds
-     * @p slip_tolerance times the largest |w|, of |lambda_i - g_i w_i/|w_i||.
-     * Zero up to the solver tolerance when the iteration has converged.
+     * The largest violation of the discrete Tresca conditions: max over
+     * nodes of (|lambda_i| - g_i)^+ and, where |w_i| exceeds
+     * @p slip_tolerance times the largest |w|, of |lambda_i - g_i w_i/|w_i||,
+     * relative to the stress scale max_i max(g_i, |r_i| / m_i) (the bound or
+     * the whole contact traction, normal part included, whichever is
+     * larger). Zero up to the solver tolerance when the iteration has
+     * converged, also as g tends to 0.
      */
     double
     max_violation(const double slip_tolerance) const;
@@ -193,10 +201,12 @@ namespace VPContact
       double                      length = 0;
       double                      g      = 0;
       TangentVector               lambda;
-      TangentVector               slip;
-      ContactStatus               status = ContactStatus::stick;
-      TangentVector               direction;
-      double                      slip_stiffness = 0;
+      /// |r_i| / m_i: the whole contact traction, normal part included.
+      double        traction = 0;
+      TangentVector slip;
+      ContactStatus status = ContactStatus::stick;
+      TangentVector direction;
+      double        slip_stiffness = 0;
       /// The direction and slip stiffness the matrix holds.
       TangentVector assembled_direction;
       double        assembled_stiffness = 0;

@@ -93,6 +93,27 @@ namespace VPContact
            const double                         youngs_modulus,
            const ResidualAssembler             &assemble_residual);
 
+    /**
+     * Record what the constraints without any stick node leave free (a
+     * rigid motion, in words; empty if they hold the body): the motion the
+     * body is free to make when every contact node slips.
+     */
+    void
+    set_motion_free_when_all_slip(const std::string &motion);
+
+    /// The motion set_motion_free_when_all_slip() recorded.
+    const std::string &
+    motion_free_when_all_slip() const;
+
+    /// The number of stick nodes (all ranks).
+    unsigned int
+    n_stick_nodes() const;
+
+    /// The largest friction bound at the contact nodes in this step (all
+    /// ranks).
+    double
+    max_bound() const;
+
     /// The iterations of the current step.
     unsigned int
     iterations() const;
@@ -132,6 +153,7 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector residual;
     unsigned int                  last_iterations   = 0;
     double                        largest_violation = 0;
+    std::string                   free_when_all_slip;
   };
 } // namespace VPContact
 

@@ -184,6 +184,10 @@ namespace VPContact
     check_stability_limits() const;
     void
     check_simplex_support() const;
+    /// Stop with a message if no contact node sticks and the other
+    /// constraints leave the body a rigid motion (simulator_checks.cc).
+    void
+    check_held_while_slipping(const double time) const;
     void
     compute_initial_state();
     void

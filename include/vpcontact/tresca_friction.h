@@ -103,6 +103,11 @@ namespace VPContact
     direction_tolerance() const;
 
   private:
+    /// Refuse a complementarity factor or slip direction tolerance outside
+    /// the range where the iteration's decisions are not round-off.
+    void
+    check_iteration_constants() const;
+
     std::unique_ptr<FunctionParser<dim>> friction_bound;
     unsigned int                         iteration_cap = 50;
     double                               c_factor      = 1.;
