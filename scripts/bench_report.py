@@ -472,7 +472,8 @@ def write_report(out, csv_path, rows):
         f"* {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB, {m['os']}; "
         f"deal.II {m['dealii']}, PETSc {m['petsc'] or '–'}, DOLFINx "
         f"{m['dolfinx'] or '–'}; vpcontact at commit {head(m)}"
-        + "".join(f" and at {c}" for c in earlier) + f"; measured {m['date']}.",
+        + "".join(f" and at {c}" for c in earlier)
+        + f"; measured {m['date']}.",
         f"* Scene: `prm/paper_fig1.prm` (Tresca friction, gradient damage, "
         f"the paper's law) on N x N cells, {steps} steps over T = 1; "
         "vpcontact writes the fields every 10 steps (column *output*), the "
