@@ -22,7 +22,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import bench_report  # noqa: E402  (next to this file)
+import bench_against  # noqa: E402  (next to this file)
+import bench_report  # noqa: E402
 
 PYTHON = "/usr/bin/python3"  # Debian's interpreter, the one with dolfinx
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
@@ -54,6 +55,16 @@ def arguments():
         ROOT, "..", "shared", "peer-dolfinx", "peer.py"),
         help="the peer's peer.py (default ../shared/peer-dolfinx/peer.py)")
     p.add_argument("--no-peer", action="store_true", help="skip the peer")
+    p.add_argument("--against", action="append", default=[],
+                   metavar="COMMIT", help="also build vpcontact at COMMIT "
+                   "(in a temporary git worktree under --workdir) and run "
+                   "each configuration with it right after HEAD's; the "
+                   "report compares their phases (repeatable)")
+    p.add_argument("--configs", metavar="REGEX", help="only the runs whose "
+                   "name matches (re.search), as in 'vpcontact Trilinos "
+                   "Cholesky, 1 rank' or 'peer gamg, 2 ranks': "
+                   "'Trilinos Cholesky' selects one path, 'AMG, 2 ranks' "
+                   "several")
     p.add_argument("--floor", action="store_true", help="also set Output/"
                    "Report solve floor where the binary has it (a solve "
                    "after the timed part)")
@@ -131,13 +142,16 @@ def run_retrying(command, executable=None, attempts=6):
 
 # Phases of the TimerOutput table, grouped for the report: first matching
 # pattern (case-insensitive) wins; "Setup" (mesh, dofs, sparsity, once per
-# run) is out of the time per step. Names the program adds later go to
-# "other" in the report and stay whole in the CSV's phases column.
+# run) is out of the time per step. The same groups hold the timers of an
+# earlier commit (--against), whose names may differ ("Error indicators"
+# before "Error estimate"). Names the patterns do not know go to "other" in
+# the report and stay whole in the CSV's phases column.
 PHASE_GROUPS = [("setup", r"^setup"), ("damage_solve", r"damage.*solve"),
                 ("damage_assembly", r"damage"),
                 ("preconditioner", r"preconditioner|factori|amg setup"),
                 ("assembly", r"assembl"), ("solve", r"solve"),
-                ("stress", r"stress"), ("output", r"output|postprocess")]
+                ("stress", r"stress"), ("estimate", r"error (estim|indic)"),
+                ("output", r"output|postprocess")]
 PHASES = bench_report.PHASES  # the same names, in the CSV's order
 
 
@@ -197,8 +211,10 @@ def launch(a, command, ranks, tag, finished):
                           mem_all_mb=sum(peaks) if peaks else "")
 
 
-def program_run(a, size, algebra, solver, ranks, has, tag):
-    """One run of vpcontact on the paper scene; a dict of the CSV's columns."""
+def program_run(a, size, algebra, solver, ranks, program, tag):
+    """One run of vpcontact (a bench_against.Program: HEAD's build or an
+    earlier commit's) on the paper scene; a dict of the CSV's columns."""
+    has = program.has
     folder = os.path.join(a.workdir, "runs", tag)
     shutil.rmtree(folder, ignore_errors=True)
     prm = os.path.join(a.workdir, tag + ".prm")
@@ -207,7 +223,7 @@ def program_run(a, size, algebra, solver, ranks, has, tag):
         solver_section += f"  set Linear algebra = {algebra}\n"
     floor = a.floor and "Output/Report solve floor" in has
     with open(prm, "w") as f:
-        f.write(open(os.path.join(ROOT, "prm", "paper_fig1.prm")).read())
+        f.write(open(program.scene).read())
         # The scene as in the file (fields every 10 steps); only the size,
         # the step count over T = 1, the folder and the solver change.
         f.write(f"\nsubsection Geometry\n  set Subdivisions = {size}, {size}\n"
@@ -216,7 +232,7 @@ def program_run(a, size, algebra, solver, ranks, has, tag):
                 f"subsection Output\n  set Directory = {folder}\n"
                 + ("  set Report solve floor = true\n" if floor else "")
                 + f"end\nsubsection Solver\n{solver_section}end\n")
-    out, row = launch(a, [a.executable, prm], ranks, tag,
+    out, row = launch(a, [program.executable, prm], ranks, tag,
                            lambda out: "Total wallclock" in out)
     if row["status"] != "ok":
         return row
@@ -313,26 +329,45 @@ def machine():
         commit=commit)
 
 
-def plan(a, has):
-    """The runs of one round per size: (code, back-end, solver, path, ranks,
-    reason to skip or None). The direct path is CHOLMOD Cholesky where
-    Trilinos runs serial and MUMPS otherwise; the AMG path is CG with AMG
-    (the peer: CG with PETSc GAMG)."""
-    algebras = has.get("Solver/Linear algebra") or ["Trilinos"]
-    solvers = has.get("Solver/Linear solver") or []
+def missing(program, algebra, solver):
+    """Why `program` cannot run a configuration, or None: an earlier commit
+    may lack a back-end or a solver (its Solver section is read from
+    `--print-parameters`); such a run is skipped and the report says so."""
+    if not program.has:
+        return "its --print-parameters printed no entries"
+    algebras = program.has.get("Solver/Linear algebra") or ["Trilinos"]
+    if algebra not in algebras:
+        return ("this vpcontact has no Solver/Linear algebra = "
+                f"{algebra} (--print-parameters)")
+    if solver not in (program.has.get("Solver/Linear solver") or []):
+        return f"this vpcontact has no Solver/Linear solver = {solver}"
+    return None
+
+
+def config_name(code, algebra, solver, ranks):
+    """What --configs matches: 'vpcontact Trilinos Cholesky, 1 rank',
+    'peer gamg, 2 ranks'."""
+    return (f"{code} {algebra + ' ' if code == 'vpcontact' else ''}{solver}"
+            f", {ranks} rank{'s' * (ranks > 1)}")
+
+
+def plan(a, programs):
+    """The runs of one round per size: (program, code, back-end, solver,
+    path, ranks, reason to skip or None). Each configuration of vpcontact
+    runs with every program (HEAD's build first, then each --against
+    commit) one right after the other, so that they meet the machine in the
+    same state; the peer runs once, with HEAD's commit in its rows. The
+    direct path is CHOLMOD Cholesky where Trilinos runs serial and MUMPS
+    otherwise; the AMG path is CG with AMG (the peer: CG with PETSc GAMG).
+    --configs keeps the runs whose config_name matches."""
     runs = []
     for algebra in ("Trilinos", "PETSc"):
         for path, ranks, solver in (
                 ("direct", 1, "Cholesky" if algebra == "Trilinos" else "MUMPS"),
                 ("direct", 2, "MUMPS"), ("AMG", 1, "CG with AMG"),
                 ("AMG", 2, "CG with AMG")):
-            skip = None
-            if algebra not in algebras:
-                skip = ("this vpcontact has no Solver/Linear algebra = "
-                        f"{algebra} (--print-parameters)")
-            elif solver not in solvers:
-                skip = f"this vpcontact has no Solver/Linear solver = {solver}"
-            runs.append(("vpcontact", algebra, solver, path, ranks, skip))
+            runs += [(p, "vpcontact", algebra, solver, path, ranks,
+                      missing(p, algebra, solver)) for p in programs]
     peer_skip = ("--no-peer" if a.no_peer else f"no {a.peer}"
                  if not os.path.exists(a.peer) else None)
     if not peer_skip and subprocess.run([PYTHON, "-c", "import dolfinx"],
@@ -340,54 +375,100 @@ def plan(a, has):
         peer_skip = f"{PYTHON} cannot import dolfinx"
     for solver, path, ranks in (("lu", "direct", 1), ("gamg", "AMG", 1),
                                 ("gamg", "AMG", 2)):
-        runs.append(("peer", "DOLFINx/PETSc", solver, path, ranks, peer_skip))
-    return runs
+        runs.append((programs[0], "peer", "DOLFINx/PETSc", solver, path,
+                     ranks, peer_skip))
+    if not a.configs:
+        return runs
+    try:
+        chosen = [r for r in runs if re.search(
+            a.configs, config_name(r[1], r[2], r[3], r[5]))]
+    except re.error as e:
+        sys.exit(f"error: --configs {a.configs!r} is no regular expression "
+                 f"({e})")
+    if not chosen:
+        sys.exit(f"error: --configs {a.configs!r} matches none of: " +
+                 "; ".join(sorted({config_name(r[1], r[2], r[3], r[5])
+                                   for r in runs})))
+    return chosen
+
+
+def earlier_programs(a, worktrees, head_commit):
+    """A build of each --against commit with the entries it offers."""
+    programs = []
+    for commit in dict.fromkeys(a.against):  # each once, in the given order
+        program = worktrees.add(commit, os.path.join(a.workdir, "logs"))
+        if program.commit == head_commit:
+            sys.exit(f"error: --against {commit} is HEAD itself "
+                     f"({head_commit}); give an earlier commit")
+        program.has = parameters(program.executable)
+        programs.append(program)
+    return programs
+
+
+def benchmark(a, info, runs):
+    """Runs every round; the rows of the CSV, which is rewritten after each
+    run, so that an interrupted benchmark keeps what it measured
+    (bench_report.py can report it)."""
+    rows = []
+    for round_ in range(1, a.rounds + 1):
+        for size in a.sizes:
+            for program, code, algebra, solver, path, ranks, skip in runs:
+                row = dict(info, round=round_, size=size, steps=a.steps,
+                           code=code, algebra=algebra, solver=solver,
+                           path=path, ranks=ranks, commit=program.commit,
+                           head=info["commit"], scene=program.scene_hash)
+                tag = re.sub(r"[^A-Za-z0-9]+", "_", f"{code}_{algebra}_"
+                             f"{solver}_{size}_{ranks}_r{round_}" +
+                             (f"_{program.commit}" if code == "vpcontact"
+                              else ""))
+                if skip:
+                    if round_ == 1 and size == a.sizes[0]:
+                        rows.append(dict(row, status="skipped: " + skip))
+                    continue
+                row.update(program_run(a, size, algebra, solver, ranks,
+                                       program, tag) if code == "vpcontact"
+                           else peer_run(a, size, solver, ranks, tag))
+                rows.append(row)
+                shown = (f"{row['total_s']:.2f} s, {row['per_step_ms']:.1f}"
+                         " ms per step" if row["status"] == "ok"
+                         else row["status"] + f" (log {row['log']})")
+                label = (f"{code} {program.commit}" if code == "vpcontact"
+                         else code)
+                print(f"{size}^2, {ranks} rank(s), {label} {algebra} "
+                      f"{solver}, round {round_}: {shown}", flush=True)
+                bench_report.write_csv(a.csv, rows)
+    return rows
 
 
 def main():
     a = arguments()
     for d in ("runs", "logs"):
         os.makedirs(os.path.join(a.workdir, d), exist_ok=True)
-    has = parameters(a.executable)
-    if not has:
-        sys.exit(f"{a.executable} --print-parameters printed no entries")
     info = machine()
-    runs = plan(a, has)
-    for code, algebra, solver, _, ranks, skip in filter(lambda r: r[5], runs):
-        print(f"note: skipping {code} {algebra} {solver} on {ranks} rank(s):"
-              f" {skip}", flush=True)
-    if any(r[0] == "peer" and not r[5] for r in runs):
-        # The peer compiles its forms on its first run (seconds, cached in
-        # ~/.cache/fenics); a tiny run first keeps that out of the timings.
-        for solver in ("lu", "gamg"):
-            subprocess.run([PYTHON, a.peer, "--n", "4", "--steps", "2",
-                            "--solver", solver, "--quiet"], env=ENV,
-                           capture_output=True)
-    rows = []
-    for round_ in range(1, a.rounds + 1):
-        for size in a.sizes:
-            for code, algebra, solver, path, ranks, skip in runs:
-                row = dict(info, round=round_, size=size, steps=a.steps,
-                           code=code, algebra=algebra, solver=solver,
-                           path=path, ranks=ranks)
-                tag = re.sub(r"[^A-Za-z0-9]+", "_", f"{code}_{algebra}_"
-                             f"{solver}_{size}_{ranks}_r{round_}")
-                if skip:
-                    if round_ == 1 and size == a.sizes[0]:
-                        rows.append(dict(row, status="skipped: " + skip))
-                    continue
-                row.update(program_run(a, size, algebra, solver, ranks, has,
-                                       tag) if code == "vpcontact" else
-                           peer_run(a, size, solver, ranks, tag))
-                rows.append(row)
-                shown = (f"{row['total_s']:.2f} s, {row['per_step_ms']:.1f}"
-                         " ms per step" if row["status"] == "ok"
-                         else row["status"] + f" (log {row['log']})")
-                print(f"{size}^2, {ranks} rank(s), {code} {algebra} {solver}"
-                      f", round {round_}: {shown}", flush=True)
-                # Written after every run, so that an interrupted benchmark
-                # keeps what it measured (bench_report.py can report it).
-                bench_report.write_csv(a.csv, rows)
+    # The worktrees of --against are this run's own: they go at the end,
+    # also when a run fails or the benchmark is interrupted.
+    head = bench_against.Program(info["commit"], a.executable, ROOT)
+    head.has = parameters(a.executable)
+    if not head.has:
+        sys.exit(f"{a.executable} --print-parameters printed no entries")
+    plan(a, [head])  # a --configs that selects nothing stops before a build
+    with bench_against.Worktrees(a.workdir) as worktrees:
+        runs = plan(a, [head] + earlier_programs(a, worktrees, head.commit))
+        for program, code, algebra, solver, _, ranks, skip in runs:
+            if skip:
+                label = (f"{code} {program.commit}" if code == "vpcontact"
+                         else code)
+                print(f"note: skipping {label} {algebra} {solver} on {ranks}"
+                      f" rank(s): {skip}", flush=True)
+        if any(r[1] == "peer" and not r[6] for r in runs):
+            # The peer compiles its forms on its first run (seconds, cached
+            # in ~/.cache/fenics); a tiny run first keeps that out of the
+            # timings.
+            for solver in ("lu", "gamg"):
+                subprocess.run([PYTHON, a.peer, "--n", "4", "--steps", "2",
+                                "--solver", solver, "--quiet"], env=ENV,
+                               capture_output=True)
+        rows = benchmark(a, info, runs)
     bench_report.write_csv(a.csv, rows)  # also where every run was skipped
     bench_report.write_report(a.out, a.csv, rows)
     print(f"wrote {a.csv} and {a.out}")

@@ -14,15 +14,19 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The groups of phases of a step (ms per step), as bench.py forms them from
 # the program's timer table and the peer's totals, and their titles.
 PHASES = ["damage_solve", "damage_assembly", "preconditioner", "assembly",
-          "solve", "stress", "output", "other"]
+          "solve", "stress", "estimate", "output", "other"]
 PHASE_TITLES = [("assembly", "assembly"),
                 ("preconditioner", "AMG setup or factorization"),
                 ("solve", "displacement solve"), ("stress", "stress update"),
                 ("damage_assembly", "damage assembly"),
-                ("damage_solve", "damage solve"), ("output", "output"),
+                ("damage_solve", "damage solve"),
+                ("estimate", "error estimate"), ("output", "output"),
                 ("other", "other")]
+# commit: the commit whose vpcontact made the row (the peer's rows: HEAD's);
+# head: the tree the benchmark ran from, the same in every row; scene: a
+# hash of the scene file that commit's binary read.
 MACHINE = ["date", "cpu", "cores", "memory_gb", "os", "dealii", "petsc",
-           "dolfinx", "commit"]
+           "dolfinx", "commit", "head", "scene"]
 COLUMNS = (["round", "size", "steps", "code", "algebra", "solver", "path",
             "ranks", "status", "dofs", "total_s", "setup_s", "per_step_ms"]
            + [p + "_ms" for p in PHASES]
@@ -65,29 +69,46 @@ def fmt(x):
     return f"{x:.0f}" if abs(x) >= 100 else f"{x:.3g}"
 
 
-def name(r):
-    solver = {"CG with AMG": "CG + AMG", "lu": "MUMPS LU",
-              "gamg": "CG + GAMG"}.get(r["solver"], r["solver"])
-    return (f"vpcontact {r['algebra']}, {solver}" if r["code"] == "vpcontact"
-            else f"DOLFINx peer, {solver}")
+def head(r):
+    """The commit the benchmark ran from (a CSV of before --against has
+    only the one commit column)."""
+    return r.get("head") or r["commit"]
+
+
+def is_head(r):
+    return r["commit"] == head(r)
 
 
 def short(r):
     """The solver part of the run's name."""
-    return name(r).split(", ")[1]
+    return {"CG with AMG": "CG + AMG", "lu": "MUMPS LU",
+            "gamg": "CG + GAMG"}.get(r["solver"], r["solver"])
+
+
+def config(r):
+    """The run's back-end and solver, as in 'Trilinos, Cholesky'."""
+    return f"{r['algebra']}, {short(r)}"
+
+
+def name(r):
+    """The run's name with the commit of its binary, as in 'vpcontact
+    211b1ab, Trilinos, Cholesky'."""
+    return (f"vpcontact {r['commit']}, {config(r)}" if r["code"] ==
+            "vpcontact" else f"DOLFINx peer, {short(r)}")
 
 
 def order(r):
-    """vpcontact before the peer, Trilinos before PETSc, direct before AMG."""
+    """vpcontact before the peer, Trilinos before PETSc, direct before AMG,
+    HEAD before earlier commits."""
     return (r["code"] != "vpcontact", r["algebra"] != "Trilinos",
-            r["path"] != "direct")
+            r["path"] != "direct", not is_head(r), r["commit"])
 
 
 def key(r):
     return (r["code"], r["algebra"], r["solver"], int(r["ranks"]))
 
 
-def medians(rows):
+def medians(rows, key=key):
     """{(size, key): the run with the median total time over the rounds}."""
     runs = {}
     for r in rows:
@@ -208,11 +229,11 @@ def advice(best, sizes):
             if rs:
                 r = min(rs, key=lambda r: r["total_s"])
                 parts.append(f"fastest on {ranks} rank{'s' * (ranks > 1)}: "
-                             f"{name(r)[10:]} ({fmt(r['total_s'])} s)")
+                             f"{config(r)} ({fmt(r['total_s'])} s)")
         withmem = [r for r in mine if r.get("mem_all_mb") != ""]
         if withmem:
             r = min(withmem, key=lambda r: r["mem_all_mb"])
-            parts.append(f"least memory: {name(r)[10:]} on {r['ranks']} "
+            parts.append(f"least memory: {config(r)} on {r['ranks']} "
                          f"rank{'s' * (int(r['ranks']) > 1)} "
                          f"({fmt(r['mem_all_mb'])} MB)")
         lines.append(f"* {size}²: " + "; ".join(parts) + ".")
@@ -283,9 +304,9 @@ def goals(best, sizes, algebras):
     rows = [
         ("best serial run at most 0.2 of the peer's best serial run",
          f"{fmt(ratio(fastest['total_s'], peer_fastest['total_s']))} "
-         f"({name(fastest)[10:]} / {short(peer_fastest)})",
+         f"({config(fastest)} / {short(peer_fastest)})",
          "Both programs call the same factorizations and Krylov solvers; "
-         f"the step of {name(fastest)[10:]} is "
+         f"the step of {config(fastest)} is "
          f"{100 * share['damage_solve']:.0f} % damage solves, "
          f"{100 * share['solve']:.0f} % triangular substitutions and "
          f"{100 * share['assembly']:.0f} % right-hand side assembly, each "
@@ -331,6 +352,63 @@ def goals(best, sizes, algebras):
     return lines
 
 
+def versus(now, then, slower_marks):
+    """'HEAD / earlier = ratio' of one figure, the ratio in bold where HEAD
+    takes longer (counted in slower_marks)."""
+    if now in ("", None) or then in ("", None) or not (now or then):
+        return "–"
+    if not then:  # a phase the earlier commit did not have
+        slower_marks.append(True)
+        return f"**{fmt(now)} / 0**"
+    r = f"{now / then:.2f}"  # slower: above 1.00 as shown
+    slower_marks.append(float(r) > 1)
+    return f"{fmt(now)} / {fmt(then)} = " + (f"**{r}**" if float(r) > 1
+                                              else r)
+
+
+def against_section(every):
+    """Each phase per step of every configuration that HEAD and an earlier
+    commit (--against) both ran, side by side, and the ratio."""
+    head_run = next(iter(every.values()), None)
+    now = head(head_run) if head_run else ""
+    earlier = sorted({k[4] for _, k in every if k[4] != now})
+    if not earlier:
+        return ["This run compared no earlier commit; `scripts/bench "
+                "--against COMMIT` adds one."]
+    lines = [
+        f"Time per step in ms of HEAD ({now}) / the earlier commit = the "
+        "ratio, **bold** where HEAD takes longer (or, in the last column, "
+        "needs more memory), for every configuration "
+        "both ran in this benchmark (each earlier commit's run right after "
+        "HEAD's in every round). Each commit's timer names are grouped as "
+        "above; a name the grouping does not know counts as *other* (the "
+        "CSV's column *phases* keeps every name). Configurations an earlier "
+        "commit does not offer are listed under *Runs not in the tables*.",
+        "", "| cells | ranks | run | against | per step | " +
+        " | ".join(t for _, t in PHASE_TITLES) + " | memory all ranks |",
+        "|" + "---|" * (6 + len(PHASE_TITLES))]
+    marks = {c: [] for c in earlier}
+    for (size, k), r in sorted(every.items(), key=lambda i: (
+            i[0][0], i[0][1][3], order(i[1]))):
+        if r["code"] != "vpcontact" or not is_head(r):
+            continue
+        for commit in earlier:
+            old = every.get((size, k[:4] + (commit,)))
+            if not old:
+                continue
+            cells = [versus(r.get(f), old.get(f), marks[commit]) for f in
+                     ["per_step_ms"] + [p + "_ms" for p, _ in PHASE_TITLES]
+                     + ["mem_all_mb"]]
+            scene = ("" if old.get("scene") == r.get("scene") else
+                     " (its scene file differs)")
+            lines.append(f"| {size}² | {k[3]} | {config(r)} | {commit}"
+                         f"{scene} | " + " | ".join(cells) + " |")
+    lines.append("")
+    lines += [f"* Against {c}: HEAD takes longer in {sum(m)} of the "
+              f"{len(m)} figures compared." for c, m in marks.items()]
+    return lines
+
+
 def scene_3d(csv_path):
     """The section of the 3D paper scene from bench_3d.csv beside the
     CSV of the 2D runs (scripts/bench_3d), if there is one."""
@@ -370,7 +448,11 @@ def scene_3d(csv_path):
 def write_report(out, csv_path, rows):
     ok = [r for r in rows if r["status"] == "ok"] or rows
     m = ok[0]
-    best = medians(rows)
+    # The tables of HEAD against the peer and the goals take HEAD's runs;
+    # the costs and the phases against earlier commits take every commit's.
+    best = medians([r for r in rows if is_head(r)])
+    every = medians(rows, key=lambda r: key(r) + (r["commit"],))
+    earlier = sorted({r["commit"] for r in rows if not is_head(r)})
     sizes = sorted({int(r["size"]) for r in rows})
     steps = int(m["steps"])
     rounds = max(int(r["round"]) for r in rows)
@@ -389,8 +471,9 @@ def write_report(out, csv_path, rows):
         "## Machine and runs", "",
         f"* {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB, {m['os']}; "
         f"deal.II {m['dealii']}, PETSc {m['petsc'] or '–'}, DOLFINx "
-        f"{m['dolfinx'] or '–'}; vpcontact at commit {m['commit']}; "
-        f"measured {m['date']}.",
+        f"{m['dolfinx'] or '–'}; vpcontact at commit {head(m)}"
+        + "".join(f" and at {c}" for c in earlier)
+        + f"; measured {m['date']}.",
         f"* Scene: `prm/paper_fig1.prm` (Tresca friction, gradient damage, "
         f"the paper's law) on N x N cells, {steps} steps over T = 1; "
         "vpcontact writes the fields every 10 steps (column *output*), the "
@@ -420,7 +503,9 @@ def write_report(out, csv_path, rows):
         "* One round: the machine's speed can drift by tens of per cent "
         "between runs; `--rounds 3` reports medians.", "",
         "## What each solver costs", "",
-    ] + cost_table(best) + [
+    ] + cost_table(every) + [
+        "", "## Phases against earlier commits", "",
+    ] + against_section(every) + [
         "", "## Which to pick", "",
     ] + advice(best, sizes) + [
         "* `Cholesky` runs on one process only; `MUMPS` is the direct "
@@ -468,7 +553,13 @@ def write_report(out, csv_path, rows):
         f"`{csv_link}`. Options: `--steps N` (default 100), `--rounds R`, "
         "`--no-peer`, `--out FILE` (the page; the CSV goes to "
         "figures/bench.csv beside it), `--quick` (16² and 32², 10 steps, "
-        "into /tmp/vpcontact_bench). `scripts/bench_report.py CSV PAGE` "
+        "into /tmp/vpcontact_bench), `--configs REGEX` (only the runs "
+        "whose name matches, as in `'Trilinos Cholesky, 1 rank'` or "
+        "`'AMG, 2 ranks'`), `--against COMMIT` (repeatable: builds "
+        "vpcontact at COMMIT in a temporary git worktree under the work "
+        "folder, runs each configuration it offers right after HEAD's and "
+        "fills the section *Phases against earlier commits*; the worktree "
+        "is removed at the end). `scripts/bench_report.py CSV PAGE` "
         "rewrites the page from the CSV alone. Run it with nothing else "
         "busy on the machine."]
     with open(out, "w") as f:
