@@ -6,6 +6,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <utility>
@@ -43,13 +44,16 @@ namespace VPContact
                         "a rotation about the " + axis[k - dim] + " axis";
     }
 
-    // Component and position of every displacement degree of freedom on
-    // the locally owned and ghost cells, the position taken from the
-    // centre of the body and scaled by its size so that translations and
-    // rotations weigh alike.
+    // Component and position of the displacement degrees of freedom of
+    // @p needed on the locally owned and ghost cells, the position taken
+    // from the centre of the body and scaled by its size so that
+    // translations and rotations weigh alike. Only the constrained lines and
+    // the degrees of freedom they refer to are needed, a small part of the
+    // mesh: the others are not looked at.
     template <int dim>
     std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>>
-    displacement_nodes(const DoFHandler<dim> &dof_handler)
+    displacement_nodes(const DoFHandler<dim> &dof_handler,
+                       const IndexSet        &needed)
     {
       const MPI_Comm            communicator = dof_handler.get_communicator();
       const FiniteElement<dim> &fe           = dof_handler.get_fe();
@@ -58,36 +62,66 @@ namespace VPContact
       const std::vector<Point<dim>>       &unit = fe.get_unit_support_points();
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
       std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>>
-        nodes;
+                 nodes;
+      Point<dim> lower, upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::numeric_limits<double>::max();
+          upper[d] = -lower[d];
+        }
+      // The body's bounding box from the cells' vertices: the support
+      // points of the linear elements.
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (!cell->is_artificial())
           {
+            for (const unsigned int v : cell->vertex_indices())
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  lower[d] = std::min(lower[d], cell->vertex(v)[d]);
+                  upper[d] = std::max(upper[d], cell->vertex(v)[d]);
+                }
             cell->get_dof_indices(dofs);
             for (unsigned int i = 0; i < dofs.size(); ++i)
               {
                 const unsigned int c = fe.system_to_component_index(i).first;
-                if (c < dim)
+                if (c < dim && needed.is_element(dofs[i])
+                    && nodes.count(dofs[i]) == 0)
                   nodes[dofs[i]]
                     = {c, mapping.transform_unit_to_real_cell(cell, unit[i])};
               }
           }
-      Point<dim> lower, upper;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          double low = std::numeric_limits<double>::max(), high = -low;
-          for (const auto &node : nodes)
-            {
-              low  = std::min(low, node.second.second[d]);
-              high = std::max(high, node.second.second[d]);
-            }
-          lower[d] = Utilities::MPI::min(low, communicator);
-          upper[d] = Utilities::MPI::max(high, communicator);
+          lower[d] = Utilities::MPI::min(lower[d], communicator);
+          upper[d] = Utilities::MPI::max(upper[d], communicator);
         }
       const Point<dim> centre = 0.5 * (lower + upper);
       const double     size   = std::max(upper.distance(lower), 1e-300);
       for (auto &node : nodes)
         node.second.second = Point<dim>((node.second.second - centre) / size);
       return nodes;
+    }
+
+    // The owned constrained lines and the degrees of freedom they refer
+    // to.
+    IndexSet
+    constrained_lines_and_parents(const IndexSet                  &owned,
+                                  const AffineConstraints<double> &constraints)
+    {
+      std::vector<types::global_dof_index> indices;
+      for (const auto &line : constraints.get_lines())
+        if (owned.is_element(line.index))
+          {
+            indices.push_back(line.index);
+            for (const auto &entry : line.entries)
+              indices.push_back(entry.first);
+          }
+      std::sort(indices.begin(), indices.end());
+      indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+      IndexSet set(owned.size());
+      set.add_indices(indices.begin(), indices.end());
+      set.compress();
+      return set;
     }
 
     // The Gram matrix G = V^T V of the rigid motions (row by row), with
@@ -102,9 +136,11 @@ namespace VPContact
                              const AffineConstraints<double> &constraints,
                              const unsigned int               n_motions)
     {
-      const IndexSet owned  = dof_handler.locally_owned_dofs();
-      const auto     nodes  = displacement_nodes(dof_handler);
-      const auto     motion = [&](const unsigned int k, const auto &node) {
+      const IndexSet owned = dof_handler.locally_owned_dofs();
+      const auto     nodes
+        = displacement_nodes(dof_handler,
+                             constrained_lines_and_parents(owned, constraints));
+      const auto motion = [&](const unsigned int k, const auto &node) {
         return rigid_motion<dim>(k, node.second, node.first);
       };
       std::vector<double> gram(n_motions * n_motions, 0.);
