@@ -15,6 +15,7 @@
 #include <fstream>
 #include <iostream>
 #include <muParser.h>
+#include <new>
 #include <sstream>
 #include <string>
 
@@ -133,6 +134,31 @@ namespace VPContact
 
 
 
+    // An allocation failed: the memory check before the run (a lower bound)
+    // passed, but the run needs more than the process may use. The rank
+    // that ran out prints the message, whichever it is; under mpirun the
+    // others may be waiting for it in a collective call, so it stops them.
+    int
+    report_out_of_memory(const MPI_Comm communicator)
+    {
+      const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+      std::cerr << "\nError: the run needs more memory than this process may "
+                   "use (std::bad_alloc on rank "
+                << rank
+                << "): the machine's memory, its cgroup limit or the "
+                   "process's ulimit -v. The mesh is set by Geometry/"
+                   "Subdivisions, Geometry/Mesh file, Geometry/Global "
+                   "refinements and Mesh refinement/Number of cycles: use "
+                   "fewer cells, more machines, or raise the limit.\n"
+                   "Stopped; exit status 1."
+                << std::endl;
+      if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+        MPI_Abort(communicator, 1);
+      return 1;
+    }
+
+
+
     // --resume may stand before or after the scene: it is taken out of
     // @p args, so that the rest of the command line is read without it, and
     // the return value says whether it was there.
@@ -233,6 +259,10 @@ namespace VPContact
     try
       {
         return run_command_line(args, resume, communicator, file);
+      }
+    catch (const std::bad_alloc &)
+      {
+        return report_out_of_memory(communicator);
       }
     catch (const std::exception &e)
       {

@@ -69,12 +69,13 @@ namespace VPContact
     global_refinements() const;
 
     /**
-     * The number of refinements of the finest mesh of the run (later
-     * refinement cycles included), for the memory check of
-     * create_coarse_mesh(); Global refinements unless set.
+     * The largest number of cells of a mesh of the run (later refinement
+     * cycles included) relative to the mesh after Global refinements, for
+     * the memory check of create_coarse_mesh(), and the entries that set it
+     * (", Mesh refinement/Number of cycles = 4"); 1 and none unless set.
      */
     void
-    set_finest_refinements(const unsigned int n);
+    set_finest_growth(const double growth, const std::string &entries);
 
     /**
      * The set of boundary ids that the mesh has, on all ranks together.
@@ -87,6 +88,13 @@ namespace VPContact
     /// quadrilaterals.
     void
     create_simplex_box(Triangulation<dim> &triangulation) const;
+
+    /// Throw a message naming @p entries if a mesh of @p n_coarse_cells
+    /// coarse cells, refined as the run will, cannot fit in memory.
+    void
+    check_memory(const double       n_coarse_cells,
+                 const std::string &entries,
+                 const MPI_Comm     communicator) const;
 
     /// Read the mesh file into @p coarse and check its cells.
     void
@@ -106,8 +114,9 @@ namespace VPContact
     /// The entry as the user wrote it, for messages.
     std::string  mesh_file_as_given;
     unsigned int n_global_refinements = 0;
-    unsigned int n_finest_refinements = 0;
-    bool         simplex              = false;
+    double       finest_growth        = 1;
+    std::string  growth_entries;
+    bool         simplex = false;
     /// The mesh file as parse_parameters() read it, until the first
     /// create_coarse_mesh() takes it (a later call reads the file again).
     std::shared_ptr<Triangulation<dim>> file_mesh;
