@@ -445,6 +445,48 @@ def scene_3d(csv_path):
     return lines
 
 
+def setup_scaling(csv_path):
+    """The section of setup time against the mesh size from bench_setup.csv
+    beside the CSV of the 2D runs (scripts/bench_setup), if there is one."""
+    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)),
+                        "bench_setup.csv")
+    if not os.path.exists(path):
+        return []
+    rows = read_csv(path)
+    if not rows:
+        return []
+    m = rows[0]
+    box = {r["cells"]: r for r in rows if r["mesh"] == "box"}
+    lines = [
+        "", "## Setup against the mesh size", "",
+        "The setup of a run (the timer's *Setup*: degrees of freedom, "
+        "constraints, sparsity patterns, matrices and the damage problem's "
+        "numbering, mass and preconditioner) from a Gmsh file of triangles "
+        "whose nodes and cells come in a random order (the L shape of "
+        "`prm/meshes/make_l_shape.py N triangles shuffled`, 6N² triangles) "
+        "and from a generated simplex box of as many triangles "
+        "(`Subdivisions = 3N, N`), both with gradient damage, one step, on "
+        f"{m['ranks']} rank(s); measured by `scripts/bench_setup` at commit "
+        f"{m['commit']} on {m['date']} ({m['cpu']}). *before the timer*: "
+        "the process's wall time outside the timer's total, which holds "
+        "reading and checking the mesh file and building the mesh. *ratio*: "
+        "the Gmsh file's setup over the box's. `scripts/bench_setup "
+        "[--sizes N ...]` (default 50 100 200 310) measures it again.", "",
+        "| mesh | cells | dofs | setup [s] | before the timer [s] | "
+        "whole run [s] | memory rank 0 [MB] | ratio |",
+        "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        other = box.get(r["cells"]) if r["mesh"] == "gmsh" else None
+        ratio = (fmt(r["setup_s"] / other["setup_s"])
+                 if other and other["setup_s"] else "–")
+        lines.append(
+            f"| {'Gmsh file, shuffled' if r['mesh'] == 'gmsh' else 'box'} | "
+            f"{r['cells']} | {r['dofs']} | {fmt(r['setup_s'])} | "
+            f"{fmt(r['before_timer_s'])} | {fmt(r['process_wall_s'])} | "
+            f"{fmt(r['mem_rank0_mb'])} | {ratio} |")
+    return lines
+
+
 def write_report(out, csv_path, rows):
     ok = [r for r in rows if r["status"] == "ok"] or rows
     m = ok[0]
@@ -533,7 +575,8 @@ def write_report(out, csv_path, rows):
         "", f"## Against the project's goals at {max(sizes)}²", "",
         "The goals the project set itself for this program against the "
         "peer, the figures of this run, and what limits them.", "",
-    ] + goals(best, sizes, algebras) + scene_3d(csv_path)
+    ] + goals(best, sizes, algebras) + scene_3d(csv_path) + setup_scaling(
+        csv_path)
     # One line per reason, listing the runs it concerns.
     reasons = {}
     for r in rows:

@@ -24,8 +24,11 @@ def cases(h):
         def setup(d):
             for name, over, files in specs:
                 Path(d, name).mkdir()
-                if over is not None:
-                    Path(d, name, "scene.prm").write_bytes(scene(over))
+                if over is not None:   # the output folder where every rank sees it
+                    over = dict({OUT: os.path.join(d, "A", "out")}, **over)
+                    extra = over.pop("include", None)   # a last line 'include FILE'
+                    Path(d, name, "scene.prm").write_bytes(
+                        scene(over) + (b"include %s\n" % extra.encode() if extra else b""))
                 for rel, text in files.items():
                     Path(d, name, rel).write_text(text)
         return setup
@@ -94,6 +97,10 @@ def cases(h):
              "rank 0's scene is the run's (one reading), no hang", "ran", outdir="A/out",
              mpmd=[("A", 1), ("B", 1)], setup=folders(("A", {}, {}),
                                                       ("B", {h.E: "500"}, {}))),
+        case("mpmd_relative_outdir", RANKS, "mpirun A : B with a relative Output/Directory "
+             "that rank 1 (in B) does not see: refused naming rank 1, no hang",
+             mpmd=[("A", 1), ("B", 1)], says="rank 1",
+             setup=folders(("A", {OUT: "out"}, {}), ("B", {OUT: "out"}, {}))),
         case("mpmd_prm_missing_rank0", RANKS, "mpirun A : B, no scene.prm in A (rank 0): one "
              "message naming the file, no hang", mpmd=[("A", 1), ("B", 1)],
              setup=folders(("A", None, {}), ("B", {}, {})), says="scene.prm"),
@@ -102,9 +109,9 @@ def cases(h):
              setup=folders(("A", h.MESH_SET, {"mesh.msh": h.GOOD}), ("B", h.MESH_SET, {}))),
         case("mpmd_include_only_rank0", RANKS, "mpirun A : B, the included file only in A",
              "ran", outdir="A/out", mpmd=[("A", 1), ("B", 1)],
-             setup=folders(("A", {}, {"more.prm": "subsection Time\n set End time = 0.05\n"
-                                                  "end\n"}), ("B", {}, {})),
-             extra="include more.prm\n"),
+             setup=folders(("A", {"include": "more.prm"},
+                            {"more.prm": "subsection Time\n set End time = 0.05\nend\n"}),
+                           ("B", {"include": "more.prm"}, {}))),
         case("np3_petsc_rank_without_cell", RANKS, "3 ranks, 2 x 1 cells (a rank owns no cell),"
              " PETSc, damage and friction g = 20", "ran", np=3,
              set=dict(PETSC, **{"Geometry/Subdivisions": "2, 1", h.FB: "20"})),

@@ -20,6 +20,7 @@
 #include <fstream>
 #include <iostream>
 #include <muParser.h>
+#include <new>
 #include <sstream>
 #include <string>
 
@@ -144,6 +145,26 @@ namespace VPContact
 
 
 
+    // An allocation failed: the memory check before the run (a lower bound)
+    // passed, but the run needs more than the process may use. The rank
+    // that ran out may be alone with it while the others wait in a
+    // collective call; the exit agreement then prints its message, naming
+    // the rank, and stops them.
+    std::string
+    out_of_memory_message(const MPI_Comm communicator)
+    {
+      return "the run needs more memory than this process may use "
+             "(std::bad_alloc on rank "
+             + std::to_string(Utilities::MPI::this_mpi_process(communicator))
+             + "): the machine's memory, its cgroup limit or the process's "
+               "ulimit -v. The mesh is set by Geometry/Subdivisions, "
+               "Geometry/Mesh file, Geometry/Global refinements and Mesh "
+               "refinement/Number of cycles: use fewer cells, more machines, "
+               "or raise the limit.";
+    }
+
+
+
     // --resume may stand before or after the scene: it is taken out of
     // @p args, so that the rest of the command line is read without it, and
     // the return value says whether it was there.
@@ -236,6 +257,10 @@ namespace VPContact
       try
         {
           return run_command_line(args, resume, communicator, file);
+        }
+      catch (const std::bad_alloc &)
+        {
+          error = out_of_memory_message(communicator);
         }
       catch (const std::exception &e)
         {

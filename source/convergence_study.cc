@@ -91,6 +91,26 @@ namespace VPContact
 
 
   template <int dim>
+  void
+  ConvergenceStudy<dim>::check_reference_times(
+    const TimeDiscretization &time) const
+  {
+    if (!reference_solution.compares())
+      return;
+    reference_solution.check_common_times(
+      time.step_size(),
+      time.n_steps(),
+      [&time](const unsigned int n) { return time.time(n); },
+      "Time/Time step = "
+        + (halvings == 0 ? to_text(time.step_size()) :
+                           to_text(time.step_size() * std::pow(2., halvings))
+                             + ", halved to " + to_text(time.step_size())
+                             + " in cycle " + std::to_string(current_cycle)));
+  }
+
+
+
+  template <int dim>
   unsigned int
   ConvergenceStudy<dim>::halvings_from_estimate(
     const unsigned long long cells) const

@@ -9,11 +9,32 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
 namespace VPContact
 {
+  namespace
+  {
+    // The IndexSet of size @p size holding @p indices (in any order, with
+    // repetitions), built in O(n log n): IndexSet::add_index() inserts an
+    // index below the last one added in time linear in the set's ranges.
+    IndexSet
+    sorted_index_set(const types::global_dof_index         size,
+                     std::vector<types::global_dof_index> &indices)
+    {
+      std::sort(indices.begin(), indices.end());
+      indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+      IndexSet set(size);
+      set.add_indices(indices.begin(), indices.end());
+      set.compress();
+      return set;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   DamageSystem<dim>::declare_parameters(ParameterHandler &prm)
@@ -126,18 +147,20 @@ namespace VPContact
   {
     // The damage dofs this rank sees, and the owned ones in the order of
     // the FESystem: they get the compact indices first, first + 1, ...
-    damage_dofs.clear();
-    damage_dofs.set_size(dof_handler.n_dofs());
+    // The cells of a mesh file come in any order, and an IndexSet takes
+    // indices one at a time in linear time each unless they come sorted:
+    // they are collected, sorted and added at once.
     std::vector<types::global_dof_index> dofs(
       dof_handler.get_fe().n_dofs_per_cell());
+    std::vector<types::global_dof_index> seen;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         {
           cell->get_dof_indices(dofs);
           for (const unsigned int i : damage_shape_functions)
-            damage_dofs.add_index(dofs[i]);
+            seen.push_back(dofs[i]);
         }
-    damage_dofs.compress();
+    damage_dofs = sorted_index_set(dof_handler.n_dofs(), seen);
     const IndexSet owned_damage_dofs = damage_dofs & locally_owned_dofs;
     compact_owned = Utilities::MPI::create_ascending_partitioning(
       communicator,
@@ -163,10 +186,10 @@ namespace VPContact
                                         communicator);
     index = index_owned;
 
-    compact_relevant = IndexSet(compact_owned.size());
+    seen.clear();
     for (const auto dof : damage_dofs)
-      compact_relevant.add_index(to_compact(index, dof));
-    compact_relevant.compress();
+      seen.push_back(to_compact(index, dof));
+    compact_relevant = sorted_index_set(compact_owned.size(), seen);
 
     const unsigned int n_shape = damage_shape_functions.size();
     cell_dofs.assign(dof_handler.get_triangulation().n_active_cells() * n_shape,

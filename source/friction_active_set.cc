@@ -537,10 +537,15 @@ namespace VPContact
   IndexSet
   FrictionActiveSet<dim>::node_dofs(const types::global_dof_index n_dofs) const
   {
-    IndexSet dofs(n_dofs);
+    // Sorted first: IndexSet::add_index() takes an index below the last
+    // one in time linear in the set's size.
+    std::vector<types::global_dof_index> indices;
     for (const auto &node : nodes)
-      for (const auto dof : node.dofs)
-        dofs.add_index(dof);
+      indices.insert(indices.end(), node.dofs.begin(), node.dofs.end());
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    IndexSet dofs(n_dofs);
+    dofs.add_indices(indices.begin(), indices.end());
     dofs.compress();
     return dofs;
   }

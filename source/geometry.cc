@@ -9,9 +9,12 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 
+#include <algorithm>
 #include <boost/crc.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -67,6 +70,61 @@ namespace VPContact
         {
           return false;
         }
+    }
+
+
+
+    // The position of @p p, in the box [lower, upper], on a Z-order
+    // (Morton) curve: the bits of its coordinates, scaled to 21-bit
+    // integers, interleaved. Points close on the curve are close in space.
+    template <int dim>
+    std::uint64_t
+    z_order(const Point<dim> &p,
+            const Point<dim> &lower,
+            const Point<dim> &upper)
+    {
+      std::uint64_t key = 0;
+      std::uint64_t coordinate[dim];
+      for (unsigned int d = 0; d < dim; ++d)
+        coordinate[d] = static_cast<std::uint64_t>(
+          (p[d] - lower[d]) / std::max(upper[d] - lower[d], 1e-300)
+          * ((1 << 21) - 1));
+      for (int bit = 20; bit >= 0; --bit)
+        for (unsigned int d = 0; d < dim; ++d)
+          key = (key << 1) | ((coordinate[d] >> bit) & 1);
+      return key;
+    }
+
+    // Copy the coarse mesh @p coarse into @p triangulation with its cells
+    // sorted along a Z-order curve through their centres, so that
+    // neighbours come close together. A mesh file's cells come in the
+    // order of its generator, which may be any; the degrees of freedom are
+    // numbered in the order of the cells, and every pass over the cells and
+    // every matrix of the run would otherwise jump through memory. The
+    // cells are put into a serial mesh first: copy_triangulation() takes
+    // its mesh smoothing (none) too, as for the meshes that come unsorted.
+    template <int dim>
+    void
+    copy_in_neighbour_order(const Triangulation<dim> &coarse,
+                            Triangulation<dim>       &triangulation)
+    {
+      auto [vertices, cells, faces]
+        = GridTools::get_coarse_mesh_description(coarse);
+      const auto box = GridTools::compute_bounding_box(coarse);
+      std::vector<std::pair<std::uint64_t, unsigned int>> keys;
+      for (const auto &cell : coarse.active_cell_iterators())
+        keys.emplace_back(z_order<dim>(cell->center(),
+                                       box.get_boundary_points().first,
+                                       box.get_boundary_points().second),
+                          cell->active_cell_index());
+      std::sort(keys.begin(), keys.end());
+      std::vector<CellData<dim>> ordered;
+      ordered.reserve(cells.size());
+      for (const auto &key : keys)
+        ordered.push_back(cells[key.second]);
+      Triangulation<dim> serial;
+      serial.create_triangulation(vertices, ordered, faces);
+      triangulation.copy_triangulation(serial);
     }
   } // namespace
 
@@ -172,7 +230,6 @@ namespace VPContact
                         .string();
       }
     n_global_refinements = prm.get_integer("Global refinements");
-    n_finest_refinements = n_global_refinements;
     simplex              = (prm.get("Cell type") == "simplex");
     prm.leave_subsection();
     if (shape == Shape::file)
@@ -224,19 +281,6 @@ namespace VPContact
   {
     const std::string refinements = " and Geometry/Global refinements = "
                                     + std::to_string(n_global_refinements);
-    // A mesh of simplices lives whole on every rank (Discretization): its
-    // refined cells count against each rank's memory like coarse cells.
-    const auto check_memory
-      = [&](const double n_coarse_cells, const std::string &entries) {
-          const double n_cells
-            = n_coarse_cells * std::pow(2., double(dim) * n_finest_refinements);
-          check_mesh_memory(
-            dim,
-            simplex ? n_cells : n_coarse_cells,
-            simplex ? 0 : n_finest_refinements,
-            entries + (simplex ? " with Geometry/Cell type = simplex" : ""),
-            triangulation.get_communicator());
-        };
     if (shape == Shape::box)
       {
         // Before the cells exist: a box of 10^12 cells must be refused, not
@@ -250,7 +294,8 @@ namespace VPContact
             list += (list.empty() ? "" : ", ") + std::to_string(n);
           }
         check_memory(n_coarse_cells,
-                     "Geometry/Subdivisions = " + list + refinements);
+                     "Geometry/Subdivisions = " + list + refinements,
+                     triangulation.get_communicator());
         if (simplex)
           create_simplex_box(triangulation);
         else
@@ -274,9 +319,36 @@ namespace VPContact
         check_memory(coarse->n_active_cells(),
                      "Geometry/Mesh file = " + mesh_file_as_given + " ("
                        + std::to_string(coarse->n_active_cells()) + " cells)"
-                       + refinements);
-        triangulation.copy_triangulation(*coarse);
+                       + refinements,
+                     triangulation.get_communicator());
+        if (simplex)
+          copy_in_neighbour_order(*coarse, triangulation);
+        else
+          triangulation.copy_triangulation(*coarse);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::check_memory(const double       n_coarse_cells,
+                              const std::string &entries,
+                              const MPI_Comm     communicator) const
+  {
+    // A mesh of simplices lives whole on every rank (Discretization): its
+    // refined cells count against each rank's memory.
+    const double n_cells = n_coarse_cells
+                           * std::pow(2., double(dim) * n_global_refinements)
+                           * finest_growth;
+    check_mesh_memory(dim,
+                      n_cells,
+                      simplex ? n_cells : n_coarse_cells,
+                      simplex,
+                      entries
+                        + (simplex ? " with Geometry/Cell type = simplex" : "")
+                        + growth_entries,
+                      communicator);
   }
 
 
@@ -433,9 +505,11 @@ namespace VPContact
 
   template <int dim>
   void
-  Geometry<dim>::set_finest_refinements(const unsigned int n)
+  Geometry<dim>::set_finest_growth(const double       growth,
+                                   const std::string &entries)
   {
-    n_finest_refinements = n;
+    finest_growth  = growth;
+    growth_entries = entries;
   }
 
 

@@ -1,6 +1,7 @@
 // Checks of a mesh before anything computes on it: its cells, and the memory
 // the refined mesh needs.
 #include <vpcontact/input_error.h>
+#include <vpcontact/memory_limit.h>
 #include <vpcontact/mesh_checks.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -12,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <unistd.h>
 
 namespace VPContact
 {
@@ -62,6 +62,14 @@ namespace VPContact
     // Every rank holds the whole coarse mesh, in deal.II's triangulation
     // and in p4est's connectivity.
     constexpr double bytes_per_coarse_cell = 500;
+    // A mesh of simplices lives whole on every rank (deal.II's shared
+    // triangulation): its cells, faces and vertices and the DoFHandler's
+    // indices of every cell; what a rank holds of its own cells is less
+    // than on quadrilaterals, with fewer nodes per cell. Lower bounds too.
+    constexpr double bytes_per_shared_cell_2d   = 950;
+    constexpr double bytes_per_shared_cell_3d   = 1200;
+    constexpr double bytes_per_owned_simplex_2d = 450;
+    constexpr double bytes_per_owned_simplex_3d = 1000;
 
     // The vertices on the boundary of the mesh as (x, index) pairs, sorted
     // by x.
@@ -253,12 +261,30 @@ namespace VPContact
 
   void
   check_mesh_memory(const unsigned int dim,
-                    const double       n_coarse_cells,
-                    const unsigned int n_refinements,
+                    const double       n_active_cells,
+                    const double       n_cells_on_every_rank,
+                    const bool         whole_mesh_on_every_rank,
                     const std::string &entries,
                     const MPI_Comm     communicator)
   {
-    // The machines' memory: what each node has, counted once per node.
+    // What each rank holds: its share of the active cells, and the cells
+    // every rank holds (p4est's coarse forest, or a whole shared mesh).
+    const double n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const double every_rank_bytes
+      = n_cells_on_every_rank
+        * (!whole_mesh_on_every_rank ? bytes_per_coarse_cell :
+           dim == 2                  ? bytes_per_shared_cell_2d :
+                                       bytes_per_shared_cell_3d);
+    const double bytes_per_owned_cell
+      = whole_mesh_on_every_rank ?
+          (dim == 2 ? bytes_per_owned_simplex_2d : bytes_per_owned_simplex_3d) :
+          (dim == 2 ? bytes_per_active_cell_2d : bytes_per_active_cell_3d);
+    const double rank_bytes
+      = every_rank_bytes + n_active_cells * bytes_per_owned_cell / n_ranks;
+
+    // The ranks of a machine share its memory (and usually its cgroup);
+    // each rank has its own ulimit. Of the limits passed, the widest is
+    // named: the machine's memory before a cgroup before a ulimit.
     MPI_Comm  node;
     const int ierr = MPI_Comm_split_type(communicator,
                                          MPI_COMM_TYPE_SHARED,
@@ -266,34 +292,38 @@ namespace VPContact
                                          MPI_INFO_NULL,
                                          &node);
     AssertThrowMPI(ierr);
-    const double node_memory = static_cast<double>(sysconf(_SC_PHYS_PAGES))
-                               * static_cast<double>(sysconf(_SC_PAGESIZE));
-    const unsigned int ranks_on_node = Utilities::MPI::n_mpi_processes(node);
-    const bool node_leader = Utilities::MPI::this_mpi_process(node) == 0;
+    const double ranks_on_node = Utilities::MPI::n_mpi_processes(node);
     MPI_Comm_free(&node);
-    const double total_memory
-      = Utilities::MPI::sum(node_leader ? node_memory : 0., communicator);
-    const double memory_per_rank
-      = Utilities::MPI::min(node_memory / ranks_on_node, communicator);
-
-    const double n_cells
-      = n_coarse_cells * std::pow(2., double(dim) * n_refinements);
-    const double active_bytes
-      = n_cells
-        * (dim == 2 ? bytes_per_active_cell_2d : bytes_per_active_cell_3d);
-    const double coarse_bytes = n_coarse_cells * bytes_per_coarse_cell;
-    AssertThrow(active_bytes <= total_memory && coarse_bytes <= memory_per_rank,
-                ExcMessage(
-                  entries + ": the mesh would have " + to_text(n_cells)
-                  + " cells, which need at least "
-                  + gigabytes(
-                    std::max(active_bytes, coarse_bytes * ranks_on_node))
-                  + " of memory, more than the machines of this run have"
-                  + (coarse_bytes > memory_per_rank ?
-                       " (every rank holds all " + to_text(n_coarse_cells)
-                         + " coarse cells)" :
-                       std::string())
-                  + ". Use fewer cells or refinements, or more machines."));
+    const MemoryLimit machine = node_memory_limit();
+    const MemoryLimit process = process_memory_limit();
+    const int         exceeded
+      = Utilities::MPI::max(rank_bytes * ranks_on_node > machine.bytes ?
+                              (machine.physical ? 3 : 2) :
+                              (rank_bytes > process.bytes ? 1 : 0),
+                            communicator);
+    if (exceeded == 0)
+      return;
+    const MemoryLimit &limit = (exceeded >= 2 ? machine : process);
+    std::string        what
+      = (exceeded == 3 ?
+           "the machines of this run have" :
+           limit.source + ", "
+             + gigabytes(Utilities::MPI::min(limit.limit, communicator)));
+    AssertThrow(
+      false,
+      ExcMessage(
+        entries + ": the mesh would have " + to_text(n_active_cells)
+        + " cells, which need at least " + gigabytes(rank_bytes)
+        + " of memory on each of the " + to_text(n_ranks) + " rank(s)"
+        + (whole_mesh_on_every_rank ?
+             " (every rank holds the whole mesh)" :
+           every_rank_bytes > 0.1 * rank_bytes ?
+             " (every rank holds all " + to_text(n_cells_on_every_rank)
+               + " coarse cells)" :
+             std::string())
+        + ", more than " + what + ". Use fewer cells or refinements"
+        + (whole_mesh_on_every_rank ? ", fewer ranks on a machine" : "")
+        + (exceeded == 1 ? ", or raise the limit." : ", or more machines.")));
   }
 
 

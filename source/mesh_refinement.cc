@@ -1,6 +1,7 @@
 // The section "Mesh refinement" and the refinement of the mesh between
 // cycles.
 #include <vpcontact/input_error.h>
+#include <vpcontact/mesh_checks.h>
 #include <vpcontact/mesh_refinement.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -141,12 +142,13 @@ namespace VPContact
 
 
   template <int dim>
-  unsigned int
-  MeshRefinement<dim>::finest_refinements(
+  double
+  MeshRefinement<dim>::largest_growth(
     const unsigned int global_refinements) const
   {
     if (cycles == 1)
-      return global_refinements;
+      return 1;
+    const double per_level = std::pow(2., dim);
     if (refinement == Strategy::adaptive)
       {
         VPContactCheckParameter(global_refinements < maximum_level,
@@ -157,7 +159,19 @@ namespace VPContact
                                   + " already reaches it: the adaptive cycles "
                                     "could refine nothing and would repeat "
                                     "the same run. Raise it.");
-        return global_refinements;
+        // No cell goes beyond Maximum level; 'fixed number' refines that
+        // fraction of the cells in each cycle, 'fixed fraction' = 1 all of
+        // them. Below 1, the cells that carry a fraction of the estimate
+        // are not known before: refine() checks each cycle's mesh.
+        const double deepest
+          = std::pow(per_level,
+                     std::min<double>(cycles - 1,
+                                      maximum_level - global_refinements));
+        if (!fixed_fraction)
+          return std::min(std::pow(1 + (per_level - 1) * refine_fraction,
+                                   cycles - 1.),
+                          deepest);
+        return refine_fraction >= 1 ? deepest : 1;
       }
     const unsigned int finest = global_refinements + cycles - 1;
     VPContactCheckParameter(finest <= maximum_level,
@@ -171,7 +185,25 @@ namespace VPContact
                               + ", beyond Mesh refinement/Maximum level = "
                               + std::to_string(maximum_level)
                               + ". Use fewer cycles or raise the level.");
-    return finest;
+    return std::pow(per_level, cycles - 1.);
+  }
+
+
+
+  template <int dim>
+  std::string
+  MeshRefinement<dim>::size_entries() const
+  {
+    if (cycles == 1)
+      return "";
+    return ", Mesh refinement/Number of cycles = " + std::to_string(cycles)
+           + (refinement == Strategy::uniform ?
+                std::string() :
+                " with Strategy = adaptive, Refinement criterion = "
+                  + std::string(fixed_fraction ? "fixed fraction" :
+                                                 "fixed number")
+                  + ", Refinement fraction = " + to_text(refine_fraction)
+                  + " and Maximum level = " + std::to_string(maximum_level));
   }
 
 
@@ -263,7 +295,32 @@ namespace VPContact
           for (const auto &cell : cells)
             cell->set_refine_flag();
       }
+    check_memory_of_next_mesh(triangulation);
     triangulation.execute_coarsening_and_refinement();
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::check_memory_of_next_mesh(
+    const parallel::TriangulationBase<dim> &triangulation) const
+  {
+    // Each cell flagged for refinement becomes 2^dim cells; coarsening
+    // (which may not happen) is not counted.
+    double flagged = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->refine_flag_set())
+        ++flagged;
+    flagged = Utilities::MPI::sum(flagged, triangulation.get_communicator());
+    check_mesh_memory(dim,
+                      triangulation.n_global_active_cells()
+                        + (std::pow(2., dim) - 1) * flagged,
+                      triangulation.n_cells(0),
+                      false,
+                      "The next adaptive cycle (" + size_entries().substr(2)
+                        + ")",
+                      triangulation.get_communicator());
   }
 
 

@@ -404,6 +404,43 @@ namespace VPContact
 
 
 
+  void
+  ReferenceSolution::check_common_times(
+    const double                           k,
+    const unsigned int                     n_steps,
+    const std::function<double(unsigned)> &time,
+    const std::string                     &k_entry) const
+  {
+    // A snapshot time t > 0 is a time of the run if it is t_n for the n
+    // nearest to t / k.
+    unsigned int common = 0;
+    for (const auto &entry : index)
+      {
+        const double n = std::round(entry.first / k);
+        if (entry.first > time_tolerance && n >= 1 && n <= n_steps
+            && std::abs(time(static_cast<unsigned int>(n)) - entry.first)
+                 <= time_tolerance)
+          ++common;
+      }
+    VPContactCheckParameter(
+      common >= 2,
+      "Reference solution/Compare with",
+      compare_folder,
+      "the reference's " + std::to_string(index.size()) + " snapshots (t = "
+        + to_text(index.front().first) + " to " + to_text(index.back().first)
+        + ", set by its Reference solution/Snapshot interval and Time/End "
+          "time) and the steps of this run ("
+        + k_entry + ", Time/End time = " + to_text(time(n_steps)) + ") share "
+        + std::to_string(common)
+        + " time(s) after t = 0; errors, orders and effectivities need at "
+          "least two. Write the reference with a Snapshot interval that "
+          "is a multiple of this run's time step and an End time of at "
+          "least this run's, or choose this run's Time/Time step and End "
+          "time to meet the reference's snapshot times.");
+  }
+
+
+
   template <int dim>
   Snapshot<dim>
   ReferenceSolution::read(const double t, const MPI_Comm communicator) const

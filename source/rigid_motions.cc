@@ -7,6 +7,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <utility>

@@ -104,9 +104,9 @@ namespace VPContact
     convergence_study.parse_parameters(prm,
                                        output_writer.directory(),
                                        time_discretization);
-    geometry.set_finest_refinements(
-      convergence_study.refinement().finest_refinements(
-        geometry.global_refinements()));
+    geometry.set_finest_growth(convergence_study.refinement().largest_growth(
+                                 geometry.global_refinements()),
+                               convergence_study.refinement().size_entries());
     checkpointing.parse_parameters(prm);
     error_estimator
       .parse_parameters(prm, convergence_study.refinement().needs_indicators());

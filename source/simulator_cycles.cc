@@ -38,6 +38,7 @@ namespace VPContact
     }
     time_discretization.set_halvings(
       convergence_study.start_cycle(cycle, triangulation));
+    convergence_study.check_reference_times(time_discretization);
 
     statistics             = Statistics();
     last_linear_iterations = 0;

@@ -69,6 +69,12 @@ namespace VPContact
     start_cycle(const unsigned int                      cycle,
                 const parallel::TriangulationBase<dim> &triangulation);
 
+    /// Before the cycle's first step, on its time grid @p time: throw a
+    /// message naming the entries if the reference shares fewer than two
+    /// times t > 0 with it (ReferenceSolution::check_common_times()).
+    void
+    check_reference_times(const TimeDiscretization &time) const;
+
     /// The next cycle's mesh from the cell @p indicators of this one.
     void
     refine(parallel::TriangulationBase<dim>   &triangulation,

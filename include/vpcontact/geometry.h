@@ -73,12 +73,13 @@ namespace VPContact
     global_refinements() const;
 
     /**
-     * The number of refinements of the finest mesh of the run (later
-     * refinement cycles included), for the memory check of
-     * create_coarse_mesh(); Global refinements unless set.
+     * The largest number of cells of a mesh of the run (later refinement
+     * cycles included) relative to the mesh after Global refinements, for
+     * the memory check of create_coarse_mesh(), and the entries that set it
+     * (", Mesh refinement/Number of cycles = 4"); 1 and none unless set.
      */
     void
-    set_finest_refinements(const unsigned int n);
+    set_finest_growth(const double growth, const std::string &entries);
 
     /**
      * The set of boundary ids that the mesh has, on all ranks together.
@@ -95,6 +96,13 @@ namespace VPContact
     /// Read the mesh file on rank 0 into mesh_bytes on every rank.
     void
     read_mesh_bytes(const MPI_Comm communicator);
+
+    /// Throw a message naming @p entries if a mesh of @p n_coarse_cells
+    /// coarse cells, refined as the run will, cannot fit in memory.
+    void
+    check_memory(const double       n_coarse_cells,
+                 const std::string &entries,
+                 const MPI_Comm     communicator) const;
 
     /// Build @p coarse from mesh_bytes and check its cells.
     void
@@ -114,8 +122,9 @@ namespace VPContact
     /// The entry as the user wrote it, for messages.
     std::string  mesh_file_as_given;
     unsigned int n_global_refinements = 0;
-    unsigned int n_finest_refinements = 0;
-    bool         simplex              = false;
+    double       finest_growth = 1;
+    std::string  growth_entries;
+    bool         simplex = false;
     /// The bytes of the mesh file, as rank 0 read them once: later coarse
     /// meshes (refinement cycles, a resumed run) are built from them, and
     /// the checksum is theirs.

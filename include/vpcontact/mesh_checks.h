@@ -29,16 +29,20 @@ namespace VPContact
 
   /**
    * Throw a message naming @p entries (the parameters that set the mesh
-   * size, with their values) if a mesh of @p n_coarse_cells coarse cells
-   * refined @p n_refinements times cannot fit in the memory of the machines
-   * of @p communicator. The estimate is a lower bound, from the memory a
-   * cell of this program takes at least; every rank also holds the whole
-   * coarse mesh (p4est's forest). Collective.
+   * size, with their values) if a mesh of @p n_active_cells cells, of which
+   * every rank holds @p n_cells_on_every_rank (the coarse cells of p4est's
+   * forest; with @p whole_mesh_on_every_rank, a shared mesh of simplices,
+   * all cells), cannot fit in what the processes of this run may use: the
+   * memory of each machine (or its cgroup limit) shared by its ranks, and
+   * each rank's own limits (ulimit -v, ulimit -d). The estimate is a lower
+   * bound, from the memory a cell of this program takes at least.
+   * Collective.
    */
   void
   check_mesh_memory(const unsigned int dim,
-                    const double       n_coarse_cells,
-                    const unsigned int n_refinements,
+                    const double       n_active_cells,
+                    const double       n_cells_on_every_rank,
+                    const bool         whole_mesh_on_every_rank,
                     const std::string &entries,
                     const MPI_Comm     communicator);
 } // namespace VPContact

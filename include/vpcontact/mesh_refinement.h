@@ -47,14 +47,23 @@ namespace VPContact
     n_cycles() const;
 
     /**
-     * The refinements of the finest mesh of the run, for a coarse mesh
-     * refined @p global_refinements times: one more per uniform cycle.
-     * Throws a message naming the entries if the cycles would go beyond
-     * Maximum level, or if adaptive cycles start at it (they would repeat
-     * the same run).
+     * The largest number of cells of a mesh of the run relative to the
+     * first one (that of Geometry/Global refinements = @p
+     * global_refinements): 2^dim per uniform cycle; for adaptive cycles the
+     * most that the Refinement fraction ('fixed number', or 'fixed
+     * fraction' = 1) and Maximum level allow, else 1 (refine() checks the
+     * memory before each adaptive refinement). Throws a message naming the
+     * entries if uniform cycles would go beyond Maximum level, or if
+     * adaptive cycles start at it (they would repeat the same run).
      */
-    unsigned int
-    finest_refinements(const unsigned int global_refinements) const;
+    double
+    largest_growth(const unsigned int global_refinements) const;
+
+    /// The entries that set the size of the cycles' meshes, for messages
+    /// (", Mesh refinement/Number of cycles = 4 ..."); empty with one cycle.
+    std::string
+    size_entries() const;
+
     /// Whether the run needs error indicators (adaptive, more than one
     /// cycle).
     bool
@@ -96,6 +105,12 @@ namespace VPContact
     void
     flag_adaptively(parallel::TriangulationBase<dim> &triangulation,
                     const Vector<float>              &indicators) const;
+
+    /// Throw a message naming the entries if the mesh that the refinement
+    /// flags of @p triangulation make cannot fit in memory.
+    void
+    check_memory_of_next_mesh(
+      const parallel::TriangulationBase<dim> &triangulation) const;
 
     unsigned int cycles             = 1;
     Strategy     refinement         = Strategy::uniform;

@@ -11,6 +11,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/grid/cell_id.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -170,6 +171,18 @@ namespace VPContact
     /// Whether the reference has a snapshot at time @p t.
     bool
     has_time(const double t) const;
+    /**
+     * Throw a message naming the entries unless the reference has snapshots
+     * at two or more times t > 0 of a run of @p n_steps steps of @p k
+     * (times @p time(n)): with fewer, the errors are those of t = 0 alone
+     * (round-off) and the table's orders and effectivities mean nothing.
+     * @p k_entry names the step ("Time/Time step = 0.1").
+     */
+    void
+    check_common_times(const double                           k,
+                       const unsigned int                     n_steps,
+                       const std::function<double(unsigned)> &time,
+                       const std::string                     &k_entry) const;
     /// The reference snapshot at time @p t (has_time(t) must hold), read
     /// on rank 0 of @p communicator for all ranks (collective).
     template <int dim>
