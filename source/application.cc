@@ -59,8 +59,8 @@ namespace VPContact
              "--resume            continue the run from its newest complete "
              "checkpoint (the same\n                    as Checkpoint/Resume "
              "from checkpoint = true). A run stopped by\n                    "
-             "SIGINT, SIGTERM or SIGUSR1 writes one and exits with status "
-             "75.\n"
+             "SIGINT, SIGTERM, SIGUSR1 or SIGPIPE writes one and exits with "
+             "status 75.\n"
              "--print-parameters  print every parameter with its default, "
              "allowed values and\n                    documentation, as a "
              "valid .prm file (for a 2D or 3D scene).\n";

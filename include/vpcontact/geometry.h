@@ -122,7 +122,7 @@ namespace VPContact
     /// The entry as the user wrote it, for messages.
     std::string  mesh_file_as_given;
     unsigned int n_global_refinements = 0;
-    double       finest_growth = 1;
+    double       finest_growth        = 1;
     std::string  growth_entries;
     bool         simplex = false;
     /// The bytes of the mesh file, as rank 0 read them once: later coarse
