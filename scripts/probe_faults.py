@@ -99,7 +99,7 @@ def cases(h):
                                                       ("B", {h.E: "500"}, {}))),
         case("mpmd_relative_outdir", RANKS, "mpirun A : B with a relative Output/Directory "
              "that rank 1 (in B) does not see: refused naming rank 1, no hang",
-             mpmd=[("A", 1), ("B", 1)], says="rank 1",
+             mpmd=[("A", 1), ("B", 1)], says="rank 1", allow=("A/out",),
              setup=folders(("A", {OUT: "out"}, {}), ("B", {OUT: "out"}, {}))),
         case("mpmd_prm_missing_rank0", RANKS, "mpirun A : B, no scene.prm in A (rank 0): one "
              "message naming the file, no hang", mpmd=[("A", 1), ("B", 1)],

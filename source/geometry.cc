@@ -48,28 +48,62 @@ namespace VPContact
              && (in >> version >> file_type) && file_type != 0;
     }
 
-    // Whether @p bytes, in the format of the file extension @p extension,
-    // read as a mesh of dimension @p other_dim: what a file of tetrahedra
-    // read for a 2D scene (or one of triangles for a 3D scene) is, since
-    // GridIn's own message lists only the cell types of the scene's
-    // dimension.
-    template <int other_dim>
-    bool
-    reads_as_mesh_of(const std::string &bytes, const std::string &extension)
+    // The largest cell dimension of the elements of a Gmsh file: what a
+    // file of tetrahedra read for a 2D scene (or one of triangles for a 3D
+    // scene) holds, since GridIn's own message lists only the cell types of
+    // the scene's dimension. The file is scanned, not read by GridIn as the
+    // other dimension: GridIn crashes on some files of the wrong dimension.
+    // Format 2 gives each element's type (1 line, 15 point, 2 triangle, 3
+    // quadrilateral, 4 tetrahedron, 5 hexahedron, 6 prism, 7 pyramid);
+    // format 4 gives each block's entity dimension. 0 where unknown.
+    int
+    gmsh_cell_dimension(const std::string &bytes)
     {
-      try
+      std::istringstream in(bytes);
+      std::string        word;
+      double             version = 0;
+      while (in >> word && word != "$MeshFormat")
+        ;
+      if (!(in >> version))
+        return 0;
+      while (in >> word && word != "$Elements")
+        ;
+      int  dimension = 0;
+      long n_items   = 0;
+      if (version >= 4)
         {
-          Triangulation<other_dim> mesh;
-          GridIn<other_dim>        grid_in;
-          grid_in.attach_triangulation(mesh);
-          std::istringstream in(bytes);
-          grid_in.read(in, GridIn<other_dim>::parse_format(extension));
-          return mesh.n_active_cells() > 0;
+          long n_elements, min_tag, max_tag;
+          if (!(in >> n_items >> n_elements >> min_tag >> max_tag))
+            return 0;
+          for (long block = 0; block < n_items; ++block)
+            {
+              int  entity_dim, entity_tag, type;
+              long n_in_block;
+              if (!(in >> entity_dim >> entity_tag >> type >> n_in_block))
+                return dimension;
+              dimension = std::max(dimension, entity_dim);
+              std::string line;
+              std::getline(in, line);
+              for (long i = 0; i < n_in_block && std::getline(in, line); ++i)
+                ;
+            }
+          return dimension;
         }
-      catch (...)
+      if (!(in >> n_items))
+        return 0;
+      std::string line;
+      std::getline(in, line);
+      for (long i = 0; i < n_items && std::getline(in, line); ++i)
         {
-          return false;
+          std::istringstream element(line);
+          int                number, type;
+          if (element >> number >> type)
+            dimension = std::max(dimension,
+                                 type >= 4 && type <= 7 ? 3 :
+                                 type == 2 || type == 3 ? 2 :
+                                                          dimension);
         }
+      return dimension;
     }
 
 
@@ -458,7 +492,7 @@ namespace VPContact
       {
         constexpr int other_dim = (dim == 2 ? 3 : 2);
         VPContactCheckParameter(
-          !reads_as_mesh_of<other_dim>(mesh_bytes, extension),
+          extension != "msh" || gmsh_cell_dimension(mesh_bytes) != other_dim,
           "Geometry/Mesh file",
           mesh_file_as_given,
           "the file holds " + std::to_string(other_dim) + "D cells ("
