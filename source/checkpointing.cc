@@ -380,7 +380,7 @@ namespace VPContact
 
   void
   Checkpointing::check_folders(const std::string &output_directory,
-                               const MPI_Comm     communicator) const
+                               const MPI_Comm     communicator)
   {
     if (!writes_periodically() && !stops_on_signal())
       return;
@@ -428,6 +428,11 @@ namespace VPContact
                              + "."));
       close(fd);
       std::filesystem::remove(probe);
+      // The output folder's lock does not cover a Checkpoint/Folder
+      // elsewhere, which another run may name too.
+      folder_lock = std::make_unique<FolderLock>(checkpoint_folder + ".lock",
+                                                 "its checkpoint folder "
+                                                   + checkpoint_folder);
     });
     AssertThrow(problem.empty(), ExcMessage(folder_entry() + problem));
   }

@@ -4,6 +4,7 @@
 #define vpcontact_checkpointing_h
 
 #include <vpcontact/checkpoint_metadata.h>
+#include <vpcontact/folder_lock.h>
 #include <vpcontact/stop_signal_catcher.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -117,10 +118,12 @@ namespace VPContact
      * checkpoint folder of this program (see write_folder_marker()), if
      * FOLDER holds the working directory or Output/Directory (which the
      * rotation would rename), or if its parent folder cannot be written.
+     * Then claims FOLDER for this run by the lock file FOLDER.lock beside
+     * it (throws naming the other run if one holds it).
      */
     void
     check_folders(const std::string &output_directory,
-                  const MPI_Comm     communicator) const;
+                  const MPI_Comm     communicator);
 
     /**
      * Collective: make FOLDER.new empty, mark it as this program's and
@@ -187,7 +190,10 @@ namespace VPContact
     bool        folder_set_by_user = false;
     std::string output_directory;
 
-    std::map<std::string, std::string>    parameters;
+    std::map<std::string, std::string> parameters;
+    /// The lock of FOLDER.lock on rank 0, held to the end of the run: two
+    /// runs with one checkpoint folder would rotate each other's files.
+    std::unique_ptr<FolderLock>           folder_lock;
     std::chrono::steady_clock::time_point last_checkpoint
       = std::chrono::steady_clock::now();
   };
