@@ -9,6 +9,7 @@
 #include <sstream>
 #include <sys/resource.h>
 #include <unistd.h>
+#include <vector>
 
 namespace VPContact
 {
@@ -87,11 +88,13 @@ namespace VPContact
     double
     used_bytes(const unsigned int field)
     {
-      std::ifstream in("/proc/self/statm");
-      double        pages = 0;
-      for (unsigned int i = 0; i <= field && (in >> pages); ++i)
-        ;
-      return pages * static_cast<double>(sysconf(_SC_PAGESIZE));
+      // /proc/self/statm holds page counts, one per field, in one line.
+      std::ifstream       in("/proc/self/statm");
+      std::vector<double> pages(field + 1, 0.);
+      for (double &p : pages)
+        if (!(in >> p))
+          return 0.;
+      return pages[field] * static_cast<double>(sysconf(_SC_PAGESIZE));
     }
 
     double
