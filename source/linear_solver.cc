@@ -20,8 +20,8 @@ namespace VPContact
         Patterns::Selection("Trilinos|PETSc"),
         "The package of the solvers and preconditioners of the displacement "
         "and damage systems. 'Trilinos': ML algebraic multigrid, Ifpack "
-        "incomplete Cholesky, Amesos KLU and MUMPS, and CHOLMOD. 'PETSc': "
-        "GAMG, block Jacobi with ICC, and MUMPS or CHOLMOD through PETSc; "
+        "incomplete Cholesky, Amesos KLU and MUMPS. 'PETSc': GAMG, block "
+        "Jacobi with ICC, and MUMPS; 'Cholesky' is the same with both. "
         "options prefixed 'vpcontact_' in PETSC_OPTIONS reach its "
         "preconditioners. Both give the same results to the solver "
         "tolerance; see doc/performance.md for what each costs.");
@@ -36,7 +36,8 @@ namespace VPContact
         "MUMPS with PETSc), for small meshes. 'MUMPS': the distributed "
         "multifrontal factorization, for medium meshes under mpirun. "
         "'Cholesky': the supernodal factorization of SuiteSparse CHOLMOD on "
-        "one process, the fastest choice for a serial 2D run. A "
+        "one process, with substitutions of the program's own, the fastest "
+        "choice for a serial 2D run. A "
         "factorization is computed once per matrix and reused by every "
         "step, and again whenever the stick set changes.");
       prm.declare_entry("Relative tolerance",

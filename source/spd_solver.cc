@@ -10,6 +10,8 @@ namespace VPContact
   create_trilinos_spd_solver(const SpdMethod method);
   std::unique_ptr<SpdSolver>
   create_petsc_spd_solver(const SpdMethod method);
+  std::unique_ptr<SpdSolver>
+  create_cholesky_spd_solver();
 
 
 
@@ -34,10 +36,10 @@ namespace VPContact
                            + " = Cholesky factorizes on one process only: run "
                              "without mpirun, or choose MUMPS (distributed) "
                              "or CG with AMG."));
-    // CHOLMOD belongs to neither package: PETSc's interface to it serves
-    // both.
-    return (package == LinearAlgebra::petsc || method == SpdMethod::cholesky) ?
-             create_petsc_spd_solver(method) :
-             create_trilinos_spd_solver(method);
+    // CHOLMOD belongs to neither package: SparseCholesky serves both.
+    if (method == SpdMethod::cholesky)
+      return create_cholesky_spd_solver();
+    return package == LinearAlgebra::petsc ? create_petsc_spd_solver(method) :
+                                             create_trilinos_spd_solver(method);
   }
 } // namespace VPContact

@@ -1,6 +1,6 @@
 // The PETSc implementation of SpdSolver: the matrix copied once into a PETSc
-// AIJ matrix, PETSc's CG with GAMG or block Jacobi / ICC, or a Cholesky
-// factorization by MUMPS or CHOLMOD through PETSc.
+// AIJ matrix, PETSc's CG with GAMG or block Jacobi / ICC, or the Cholesky
+// factorization of MUMPS through PETSc.
 #include <vpcontact/petsc_tools.h>
 #include <vpcontact/spd_solver.h>
 
@@ -50,11 +50,7 @@ namespace VPContact
             VPContactPetsc(KSPSetOperators(ksp, A, A));
             VPContactPetsc(KSPSetType(ksp, KSPPREONLY));
             VPContactPetsc(PCSetType(pc, PCCHOLESKY));
-            VPContactPetsc(
-              PCFactorSetMatSolverType(pc,
-                                       method == SpdMethod::cholesky ?
-                                         MATSOLVERCHOLMOD :
-                                         MATSOLVERMUMPS));
+            VPContactPetsc(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
           }
         else
           {

@@ -1,5 +1,6 @@
 // The Trilinos implementation of SpdSolver: deal.II's CG with ML or Ifpack
 // preconditioners, and Amesos factorizations.
+#include <vpcontact/free_rows_system.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/spd_solver.h>
 
@@ -62,6 +63,7 @@ namespace VPContact
         this->matrix = &matrix;
         preconditioner.reset();
         direct.reset();
+        free_rows.clear();
         if (method == SpdMethod::cg_amg)
           initialize_amg(matrix, near_null_space);
         else if (method == SpdMethod::cg_incomplete_cholesky)
@@ -100,6 +102,8 @@ namespace VPContact
         if (!Utilities::MPI::logical_or(!held.empty(),
                                         matrix->get_mpi_communicator()))
           cg.solve(*matrix, x, b, *preconditioner);
+        else if (method == SpdMethod::cg_incomplete_cholesky)
+          solve_on_free_rows(x, b, cg, held);
         else
           cg.solve(masked([this](auto       &dst,
                                  const auto &src) { matrix->vmult(dst, src); },
@@ -130,6 +134,29 @@ namespace VPContact
       }
 
     private:
+      /**
+       * CG on K_FF, the free rows' submatrix, preconditioned by IC(0) of
+       * K_FF itself. Both are built again only when the free set changes;
+       * the damage solves of a step change it at first and then confirm it.
+       */
+      void
+      solve_on_free_rows(TrilinosWrappers::MPI::Vector           &x,
+                         const TrilinosWrappers::MPI::Vector     &b,
+                         SolverCG<TrilinosWrappers::MPI::Vector> &cg,
+                         const std::vector<unsigned int>         &held)
+      {
+        if (free_rows.select(*matrix, held))
+          {
+            free_preconditioner.initialize(free_rows.matrix());
+            free_rows.reinit_vector(x_free);
+            free_rows.reinit_vector(b_free);
+          }
+        free_rows.restrict_to_free(x, x_free);
+        free_rows.restrict_to_free(b, b_free);
+        cg.solve(free_rows.matrix(), x_free, b_free, free_preconditioner);
+        free_rows.extend_to_full(x_free, x);
+      }
+
       /**
        * ML with the settings of step-42 for elasticity (few levels,
        * two smoothing sweeps, a low aggregation threshold) and, for a
@@ -181,6 +208,9 @@ namespace VPContact
       std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
       SolverControl                                       direct_control;
       std::unique_ptr<TrilinosWrappers::SolverDirect>     direct;
+      FreeRowsSystem                                      free_rows;
+      TrilinosWrappers::PreconditionIC                    free_preconditioner;
+      TrilinosWrappers::MPI::Vector                       x_free, b_free;
     };
   } // namespace
 

@@ -37,7 +37,7 @@ namespace VPContact
     /// The distributed multifrontal factorization MUMPS.
     mumps,
     /// The supernodal Cholesky factorization of SuiteSparse CHOLMOD, on
-    /// one process (through PETSc's interface, for either package).
+    /// one process (SparseCholesky, for either package).
     cholesky
   };
 
@@ -65,13 +65,14 @@ namespace VPContact
    * pass over their entries.
    *
    * A solve may hold some rows: K x = b is then solved on the other rows
-   * (the free ones) with x = 0 on the held ones. Trilinos runs CG on
-   * P K P + (I - P) preconditioned by P C P + (I - P), P the projection onto
-   * the free rows and C the preconditioner of all of K, so that neither is
-   * rebuilt when the held rows change, as they do in every iteration of the
-   * damage bounds' active set method. PETSc solves on the free rows'
-   * submatrix with a preconditioner of its own. The factorizations solve
-   * with all rows.
+   * (the free ones) with x = 0 on the held ones. With incomplete Cholesky,
+   * both packages solve on the free rows' submatrix K_FF with IC(0) of K_FF
+   * (Trilinos: FreeRowsSystem, rebuilt only when the free set changes;
+   * PETSc: MatCreateSubMatrix), so that an iteration costs what the free
+   * rows cost, a few per cent of all in the damage solves. With AMG,
+   * Trilinos runs CG on P K P + (I - P) preconditioned by P C P + (I - P),
+   * P the projection onto the free rows and C the AMG of all of K, built
+   * once. The factorizations solve with all rows.
    */
   class SpdSolver
   {

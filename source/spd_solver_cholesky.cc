@@ -1,0 +1,62 @@
+// The SpdSolver of Solver/Linear solver = Cholesky: the supernodal
+// factorization of SparseCholesky, for either linear algebra package.
+#include <vpcontact/sparse_cholesky.h>
+#include <vpcontact/spd_solver.h>
+
+namespace VPContact
+{
+  namespace
+  {
+    /**
+     * K factorized once in initialize(); every solve is one pair of
+     * substitutions. The vectors are the program's Trilinos vectors
+     * themselves, so neither package copies them.
+     */
+    class CholeskySpdSolver : public SpdSolver
+    {
+    public:
+      void
+      initialize(const TrilinosWrappers::SparseMatrix &matrix,
+                 const NearNullSpace &) override
+      {
+        factors.factorize(matrix);
+      }
+
+      unsigned int
+      solve(TrilinosWrappers::MPI::Vector       &x,
+            const TrilinosWrappers::MPI::Vector &b,
+            SolverControl &,
+            const std::vector<unsigned int> &held) override
+      {
+        (void)held;
+        Assert(held.empty(), ExcNotImplemented());
+        factors.solve(x, b);
+        return 1;
+      }
+
+      void
+      precondition(TrilinosWrappers::MPI::Vector       &dst,
+                   const TrilinosWrappers::MPI::Vector &src) override
+      {
+        factors.solve(dst, src);
+      }
+
+      bool
+      is_direct() const override
+      {
+        return true;
+      }
+
+    private:
+      SparseCholesky factors;
+    };
+  } // namespace
+
+
+
+  std::unique_ptr<SpdSolver>
+  create_cholesky_spd_solver()
+  {
+    return std::make_unique<CholeskySpdSolver>();
+  }
+} // namespace VPContact
