@@ -521,11 +521,11 @@ def write_report(out, csv_path, rows):
         "vpcontact writes the fields every 10 steps (column *output*), the "
         "peer writes none.",
         "* vpcontact: `Solver/Linear algebra` = Trilinos or PETSc; the "
-        "direct path is `Solver/Linear solver = Cholesky` (CHOLMOD through "
-        "PETSc's interface, one process; run with the Trilinos package) or "
+        "direct path is `Solver/Linear solver = Cholesky` (CHOLMOD, one "
+        "process; run with the Trilinos package) or "
         "`MUMPS`, the AMG path `CG with AMG` (ML or GAMG, the rigid motions "
         "as near null space). The damage solves use incomplete Cholesky "
-        "(Ifpack, masked; PETSc ICC on the free rows). 2 ranks are "
+        "on the free rows (Ifpack IC, PETSc ICC). 2 ranks are "
         "`mpirun -np 2`, one core each; 1 rank uses deal.II's threads on "
         "both cores.",
         "* Peer: `peer.py --solver lu` (MUMPS LU, factorized once) and "
@@ -607,6 +607,13 @@ def write_report(out, csv_path, rows):
         "busy on the machine."]
     with open(out, "w") as f:
         f.write("\n".join(text) + "\n")
+    # The decisions of the rule on own kernels go into the design page
+    # beside the report of doc/ (not for a report elsewhere, as --quick's).
+    design = os.path.join(os.path.dirname(os.path.abspath(out)), "design.md")
+    if earlier and os.path.abspath(out) == os.path.join(ROOT, "doc",
+                                                        "performance.md"):
+        import bench_decisions  # noqa: E402  (it imports this module)
+        bench_decisions.rewrite_design(every, design)
     if len(text) > 150:
         print(f"note: {out} has {len(text)} lines")
 
