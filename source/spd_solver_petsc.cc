@@ -122,10 +122,10 @@ namespace VPContact
     private:
       /**
        * K_FF x_F = b_F on the free rows alone: their submatrix
-       * (MatCreateSubMatrix) with its own preconditioner, built for each
-       * held set. Where most rows are held, as in the damage solves, whose
-       * free nodes are those near the damaged zone, a solve costs in
-       * proportion to the free rows.
+       * (MatCreateSubMatrix) with its own preconditioner, built again only
+       * when the free set changes (see select_free_rows()). Where most rows
+       * are held, as in the damage solves, whose free nodes are those near
+       * the damaged zone, a solve costs in proportion to the free rows.
        */
       unsigned int
       solve_on_free_rows(TrilinosWrappers::MPI::Vector       &solution,
@@ -133,29 +133,8 @@ namespace VPContact
                          SolverControl                       &control,
                          const std::vector<unsigned int>     &held_rows)
       {
-        PetscInt first, last;
-        VPContactPetsc(MatGetOwnershipRange(A, &first, &last));
-        std::vector<bool> is_held(last - first, false);
-        for (const auto i : held_rows)
-          is_held[i] = true;
-        std::vector<PetscInt> free_rows;
-        for (PetscInt i = 0; i < last - first; ++i)
-          if (!is_held[i])
-            free_rows.push_back(first + i);
-        IS  rows;
-        Mat sub;
-        KSP sub_ksp;
-        VPContactPetsc(ISCreateGeneral(communicator,
-                                       free_rows.size(),
-                                       free_rows.data(),
-                                       PETSC_USE_POINTER,
-                                       &rows));
-        VPContactPetsc(
-          MatCreateSubMatrix(A, rows, rows, MAT_INITIAL_MATRIX, &sub));
-        VPContactPetsc(KSPCreate(communicator, &sub_ksp));
-        VPContactPetsc(KSPSetOperators(sub_ksp, sub, sub));
-        configure_cg(sub_ksp);
-        VPContactPetsc(KSPSetTolerances(sub_ksp,
+        select_free_rows(held_rows);
+        VPContactPetsc(KSPSetTolerances(free_ksp,
                                         0.,
                                         control.tolerance(),
                                         no_divergence_test,
@@ -163,17 +142,64 @@ namespace VPContact
         copy_to_petsc(rhs, b);
         copy_to_petsc(solution, x);
         Vec b_free, x_free;
-        VPContactPetsc(VecGetSubVector(b, rows, &b_free));
-        VPContactPetsc(VecGetSubVector(x, rows, &x_free));
-        VPContactPetsc(KSPSolve(sub_ksp, b_free, x_free));
-        VPContactPetsc(VecRestoreSubVector(b, rows, &b_free));
-        VPContactPetsc(VecRestoreSubVector(x, rows, &x_free));
-        const unsigned int iterations = finished(sub_ksp);
-        KSPDestroy(&sub_ksp);
-        MatDestroy(&sub);
-        ISDestroy(&rows);
+        VPContactPetsc(VecGetSubVector(b, free_set, &b_free));
+        VPContactPetsc(VecGetSubVector(x, free_set, &x_free));
+        VPContactPetsc(KSPSolve(free_ksp, b_free, x_free));
+        VPContactPetsc(VecRestoreSubVector(b, free_set, &b_free));
+        VPContactPetsc(VecRestoreSubVector(x, free_set, &x_free));
+        const unsigned int iterations = finished(free_ksp);
         copy_from_petsc(x, solution);
         return iterations;
+      }
+
+      /**
+       * The free rows' index set, submatrix and solver for @p held_rows,
+       * kept from the last solve where no rank's free set changed (the
+       * damage solves of a step end by confirming their sets, and the sets
+       * of consecutive steps often agree).
+       */
+      void
+      select_free_rows(const std::vector<unsigned int> &held_rows)
+      {
+        PetscInt first, last;
+        VPContactPetsc(MatGetOwnershipRange(A, &first, &last));
+        std::vector<bool> is_held(last - first, false);
+        for (const auto i : held_rows)
+          is_held[i] = true;
+        std::vector<PetscInt> rows;
+        for (PetscInt i = 0; i < last - first; ++i)
+          if (!is_held[i])
+            rows.push_back(first + i);
+        if (!Utilities::MPI::logical_or(free_ksp == nullptr
+                                          || rows != free_rows,
+                                        communicator))
+          return;
+        release_free_rows();
+        free_rows = std::move(rows);
+        VPContactPetsc(ISCreateGeneral(communicator,
+                                       free_rows.size(),
+                                       free_rows.data(),
+                                       PETSC_USE_POINTER,
+                                       &free_set));
+        VPContactPetsc(MatCreateSubMatrix(A,
+                                          free_set,
+                                          free_set,
+                                          MAT_INITIAL_MATRIX,
+                                          &free_matrix));
+        VPContactPetsc(KSPCreate(communicator, &free_ksp));
+        VPContactPetsc(KSPSetOperators(free_ksp, free_matrix, free_matrix));
+        configure_cg(free_ksp);
+      }
+
+      void
+      release_free_rows()
+      {
+        if (free_ksp != nullptr)
+          KSPDestroy(&free_ksp);
+        if (free_matrix != nullptr)
+          MatDestroy(&free_matrix);
+        if (free_set != nullptr)
+          ISDestroy(&free_set);
       }
 
       /// The iterations of the last solve of @p solver; throws
@@ -251,6 +277,7 @@ namespace VPContact
       void
       release()
       {
+        release_free_rows();
         if (ksp != nullptr)
           KSPDestroy(&ksp);
         if (A != nullptr)
@@ -266,6 +293,12 @@ namespace VPContact
       Mat             A            = nullptr;
       KSP             ksp          = nullptr;
       Vec             x = nullptr, b = nullptr;
+      /// The free rows of the last solve that held rows, and their index
+      /// set (pointing into free_rows), submatrix and solver.
+      std::vector<PetscInt> free_rows;
+      IS                    free_set    = nullptr;
+      Mat                   free_matrix = nullptr;
+      KSP                   free_ksp    = nullptr;
     };
   } // namespace
 
