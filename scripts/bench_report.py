@@ -330,26 +330,30 @@ def scene_3d(csv_path):
     rows = [r for r in read_csv(path) if r["status"] == "ok"]
     if not rows:
         return []
-    n, m = rows[0]["cells_per_side"], rows[0]
+    m = rows[0]
     lines = [
-        "", f"## The 3D paper scene at {n}³ cells", "",
-        f"`prm/paper_fig1_3d.prm` (the unit cube, Tresca friction on z = 0, "
-        f"gradient damage, the paper's law) on {n} × {n} × {n} cells, "
-        f"{m['steps']} steps of k = 0.01 with `CG with AMG` (Trilinos ML), no "
-        f"field output, measured by `scripts/bench_3d` at commit "
+        "", "## The 3D scenes", "",
+        "`prm/paper_fig1_3d.prm` (*paper*: the unit cube, Tresca friction "
+        "on z = 0, gradient damage, the paper's law) and "
+        "`prm/paper_fig1_3d_slip.prm` (*slip*: the same without damage and "
+        "with a friction bound low enough for the contact face to slip) on "
+        "N × N × N cells (column *N*), "
+        f"{m['steps']} steps of k = 0.01 with `CG with AMG` (Trilinos "
+        "ML), no field output, measured by `scripts/bench_3d` at commit "
         f"{m['commit']} on {m['date']} ({m['cpu']}). Time per step in ms, "
         "split as above; *AS its*: friction active-set iterations per "
         "step (one where a node changes set reassembles the matrix and "
         "rebuilds AMG).", "",
-        "| ranks | dofs | total [s] | per step [ms] | " +
+        "| scene | N | ranks | dofs | total [s] | per step [ms] | " +
         " | ".join(t for _, t in PHASE_TITLES) +
         " | CG its per step | AS its per step | memory rank 0 [MB] | "
         "memory all ranks [MB] |",
-        "|" + "---|" * (8 + len(PHASE_TITLES))]
+        "|" + "---|" * (10 + len(PHASE_TITLES))]
     for r in rows:
         lines.append(
-            f"| {r['ranks']} | {r['dofs']} | {fmt(r['total_s'])} | "
-            f"{fmt(r['per_step_ms'])} | " +
+            f"| {r.get('scene') or 'paper'} | {r['cells_per_side']} | "
+            f"{r['ranks']} | {r['dofs']} | "
+            f"{fmt(r['total_s'])} | {fmt(r['per_step_ms'])} | " +
             " | ".join(fmt(r.get(p + "_ms")) for p, _ in PHASE_TITLES) +
             f" | {fmt(r['linear_its'])} | {fmt(r['active_set_its'])} | "
             f"{fmt(r['mem_rank0_mb'])} | {fmt(r['mem_all_mb'])} |")
