@@ -1,13 +1,16 @@
-// ErrorEstimator: the section "Error estimate", the recovery of stress,
-// strain and damage gradient on continuous Q1 fields, and the space and time
-// parts of the estimate of every step.
+// ErrorEstimator: the section "Error estimate", and in every step the
+// recovery of stress, strain and damage gradient on continuous Q1 fields and
+// the space and time parts of the estimate (the work once per mesh is in
+// error_estimator_setup.cc).
 #include <vpcontact/error_estimator.h>
 #include <vpcontact/input_error.h>
 
 #include <deal.II/base/parallel.h>
-#include <deal.II/dofs/dof_tools.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 
 namespace VPContact
 {
@@ -16,6 +19,10 @@ namespace VPContact
     template <int dim>
     constexpr unsigned int n_tensor
       = SymmetricTensor<2, dim>::n_independent_components;
+    /// The number of recovered components: the stress and the strain, and
+    /// with damage its gradient.
+    template <int dim, bool damage>
+    constexpr unsigned int n_fields = 2 * n_tensor<dim> + (damage ? dim : 0);
   } // namespace
 
 
@@ -68,116 +75,120 @@ namespace VPContact
 
 
   template <int dim>
+  template <bool damage>
   void
-  ErrorEstimator<dim>::setup(const parallel::TriangulationBase<dim> &tria,
-                             const std::vector<cell_iterator> &owned_cells,
-                             const CellKinematics<dim>        &cell_kinematics,
-                             StressHistory<dim>               &stress_history)
-  {
-    // A scalar Q1 (P1) space on the mesh; its owned and ghost nodes hold the
-    // recovered fields, one block per component.
-    triangulation = &tria;
-    cells         = &owned_cells;
-    kinematics    = &cell_kinematics;
-    history       = &stress_history;
-    with_damage   = cell_kinematics.has_damage();
-    recovery_fe   = cell_kinematics.scalar_element().clone();
-    recovery_dofs.reinit(tria);
-    recovery_dofs.distribute_dofs(*recovery_fe);
-    const IndexSet owned = recovery_dofs.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(recovery_dofs, relevant);
-    constraints.clear();
-    constraints.reinit(relevant);
-    DoFTools::make_hanging_node_constraints(recovery_dofs, constraints);
-    constraints.close();
-
-    const MPI_Comm communicator = tria.get_communicator();
-    lumped_mass.reinit(owned, relevant, communicator);
-    recovered.reinit(2 * n_tensor<dim> + (with_damage ? dim : 0));
-    for (unsigned int b = 0; b < recovered.n_blocks(); ++b)
-      recovered.block(b).reinit(owned, relevant, communicator);
-    recovered.collect_sizes();
-
-    AssertThrow(owned_cells.empty()
-                  || stress_history.JxW(owned_cells[0]).size()
-                       <= PointValues::max_points,
-                ExcMessage("ErrorEstimator: more quadrature points per cell "
-                           "than it is built for."));
-    setup_nodes_and_mass();
-    indicators.reinit(tria.n_active_cells());
-    largest_sum  = ErrorEstimate();
-    largest_part = ErrorEstimate();
-  }
-
-
-
-  template <int dim>
-  void
-  ErrorEstimator<dim>::setup_nodes_and_mass()
-  {
-    // The nodes of every owned cell, by global index, and the lumped mass
-    // sum_K int_K phi_i (condensed onto the nodes that carry the values
-    // where the mesh has hanging nodes).
-    const unsigned int n_nodes = recovery_fe->n_dofs_per_cell();
-    node_indices.resize((*cells).size() * n_nodes);
-    node_locals.resize((*cells).size() * n_nodes);
-    has_constraints.assign((*cells).size(), false);
-    std::vector<types::global_dof_index> dofs(n_nodes);
-    Vector<double>                       cell_mass(n_nodes);
-    for (std::size_t i = 0; i < (*cells).size(); ++i)
-      {
-        const typename DoFHandler<dim>::active_cell_iterator cell(
-          triangulation,
-          (*cells)[i]->level(),
-          (*cells)[i]->index(),
-          &recovery_dofs);
-        cell->get_dof_indices(dofs);
-        const auto JxW = history->JxW((*cells)[i]);
-        cell_mass      = 0;
-        for (unsigned int q = 0; q < JxW.size(); ++q)
-          for (unsigned int a = 0; a < n_nodes; ++a)
-            cell_mass(a) += kinematics->shape_value(q, a) * JxW[q];
-        constraints.distribute_local_to_global(cell_mass, dofs, lumped_mass);
-        for (unsigned int a = 0; a < n_nodes; ++a)
-          {
-            node_indices[i * n_nodes + a] = dofs[a];
-            node_locals[i * n_nodes + a]
-              = lumped_mass.get_partitioner()->global_to_local(dofs[a]);
-            has_constraints[i]
-              = has_constraints[i] || constraints.is_constrained(dofs[a]);
-          }
-      }
-    lumped_mass.compress(VectorOperation::add);
-  }
-
-
-
-  template <int dim>
-  void
-  ErrorEstimator<dim>::evaluate_points(const std::size_t i,
-                                       const double     *entries,
-                                       PointValues      &values) const
+  ErrorEstimator<dim>::evaluate_fields(const std::size_t        i,
+                                       const double            *entries,
+                                       SymmetricTensor<2, dim> *strain,
+                                       Tensor<1, dim>          *gradient,
+                                       double                  *zeta) const
   {
     // The strain, damage gradient and damage of the solution at the points
-    // of cell i (zeta = 1 without damage).
-    const auto        &cell = (*cells)[i];
-    const unsigned int n_q  = history->JxW(cell).size();
-    kinematics->strains(cell,
-                        entries,
-                        make_array_view(&values.strains[0],
-                                        &values.strains[0] + n_q));
-    values.damage.fill(1.);
-    if (with_damage)
+    // of cell i, from the cell's nodal values read once (the same sums, in
+    // the same order, as CellKinematics::strains() and the others).
+    const auto                 &cell = (*cells)[i];
+    const Tensor<1, dim> *const grad = kinematics->shape_gradients(cell);
+    std::array<std::array<double, max_nodes>, dim + 1> u;
+    for (unsigned int d = 0; d < (damage ? dim + 1 : dim); ++d)
+      kinematics->nodal_values(cell,
+                               entries,
+                               d,
+                               make_array_view(&u[d][0], &u[d][0] + n_nodes));
+    for (unsigned int q = 0; q < n_q; ++q)
       {
-        kinematics->damage_gradients(
-          cell,
-          entries,
-          make_array_view(&values.gradients[0], &values.gradients[0] + n_q));
-        kinematics->damage(cell,
-                           entries,
-                           make_array_view(&values.damage[0],
-                                           &values.damage[0] + n_q));
+        Tensor<2, dim> du;
+        Tensor<1, dim> g;
+        double         z = 0;
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          {
+            const Tensor<1, dim> &G = grad[q * n_nodes + a];
+            for (unsigned int d = 0; d < dim; ++d)
+              du[d] += u[d][a] * G;
+            if (damage)
+              {
+                g += u[dim][a] * G;
+                z += u[dim][a] * kinematics->shape_value(q, a);
+              }
+          }
+        strain[q]   = symmetrize(du);
+        gradient[q] = g;
+        zeta[q]     = (damage ? z : 1.);
+      }
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  double
+  ErrorEstimator<dim>::first_pass(const std::size_t           i,
+                                  const double               *entries,
+                                  const ViscoplasticLaw<dim> &law,
+                                  const bool                  initial)
+  {
+    // On cell i: the discrete fields at the points (kept for the second
+    // pass), int_K phi_a q_h for every node a and component q of the
+    // recovered fields, and the squared norm of G_n - G_0, which needs
+    // nothing recovered (at n = 0, G_0 is stored instead).
+    constexpr unsigned int n_c    = n_fields<dim, damage>;
+    const auto             points = history->get_data((*cells)[i]);
+    const auto             JxW    = history->JxW((*cells)[i]);
+    std::array<SymmetricTensor<2, dim>, max_points> strain;
+    std::array<Tensor<1, dim>, max_points>          gradient;
+    std::array<double, max_points>                  zeta;
+    evaluate_fields<damage>(i, entries, &strain[0], &gradient[0], &zeta[0]);
+    double *const f = &point_values[i * n_q * n_c];
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+        {
+          f[q * n_c + c]                 = points[q].stress.access_raw_entry(c);
+          f[q * n_c + n_tensor<dim> + c] = strain[q].access_raw_entry(c);
+          if (damage && c < dim)
+            f[q * n_c + 2 * n_tensor<dim> + c] = gradient[q][c];
+        }
+    double *const m = &moments[i * n_nodes * n_c];
+    std::fill(m, m + n_nodes * n_c, 0.);
+    double time = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          {
+            const double w = kinematics->shape_value(q, a) * JxW[q];
+            for (unsigned int c = 0; c < n_c; ++c)
+              m[a * n_c + c] += w * f[q * n_c + c];
+          }
+        const auto rate = law.rate(points[q].stress, strain[q], zeta[q]);
+        if (initial)
+          points[q].initial_rate = rate;
+        const auto change = rate - points[q].initial_rate;
+        time += scalar_product(change, change) * JxW[q];
+      }
+    return time;
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  void
+  ErrorEstimator<dim>::gather_nodes(const std::size_t begin,
+                                    const std::size_t end)
+  {
+    // Local nodes begin to end (owned and ghost) of the cells without
+    // hanging nodes: the sum of the moments of the cells that share each.
+    constexpr unsigned int n_c    = n_fields<dim, damage>;
+    double *const          values = recovered.begin();
+    for (std::size_t j = begin; j < end; ++j)
+      {
+        double node[n_c] = {};
+        for (unsigned int s = slot_start[j]; s < slot_start[j + 1]; ++s)
+          {
+            const double *const cell_moments
+              = &moments[std::size_t(slots[s]) * n_c];
+            for (unsigned int c = 0; c < n_c; ++c)
+              node[c] += cell_moments[c];
+          }
+        std::copy_n(node, n_c, values + j * n_c);
       }
   }
 
@@ -185,175 +196,164 @@ namespace VPContact
 
   template <int dim>
   void
-  ErrorEstimator<dim>::cell_moments(const std::size_t i,
-                                    const double     *entries,
-                                    double           *moments) const
+  ErrorEstimator<dim>::add_constrained_cells()
   {
-    // int_K phi_a q_h for every node a of cell i and every component q of
-    // the recovered fields, at moments[block * n_nodes + a].
-    const auto        &cell    = (*cells)[i];
-    const auto         points  = history->get_data(cell);
-    const auto         JxW     = history->JxW(cell);
-    const unsigned int n_q     = JxW.size();
-    const unsigned int n_nodes = recovery_fe->n_dofs_per_cell();
-    PointValues        values;
-    evaluate_points(i, entries, values);
-    const auto &strains   = values.strains;
-    const auto &gradients = values.gradients;
-    std::fill(moments, moments + recovered.n_blocks() * n_nodes, 0.);
-    for (unsigned int q = 0; q < n_q; ++q)
+    // The moments of the (few) cells with hanging nodes: a constrained
+    // node's go to the nodes it hangs on, with the constraint's weights (as
+    // AffineConstraints::distribute_local_to_global() would add them).
+    double *const values      = recovered.begin();
+    const auto   &partitioner = *lumped_mass.get_partitioner();
+    for (const std::size_t i : constrained_cells)
       for (unsigned int a = 0; a < n_nodes; ++a)
         {
-          const double w = kinematics->shape_value(q, a) * JxW[q];
-          for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+          const double *const cell_moments
+            = &moments[(i * n_nodes + a) * n_components];
+          const auto dof = node_indices[i * n_nodes + a];
+          if (!constraints.is_constrained(dof))
             {
-              moments[c * n_nodes + a]
-                += w * points[q].stress.access_raw_entry(c);
-              moments[(n_tensor<dim> + c) * n_nodes + a]
-                += w * strains[q].access_raw_entry(c);
+              double *const node
+                = values
+                  + node_locals[i * n_nodes + a] * std::size_t(n_components);
+              for (unsigned int c = 0; c < n_components; ++c)
+                node[c] += cell_moments[c];
             }
-          if (with_damage)
-            for (unsigned int d = 0; d < dim; ++d)
-              moments[(2 * n_tensor<dim> + d) * n_nodes + a]
-                += w * gradients[q][d];
+          else
+            for (const auto &entry : *constraints.get_constraint_entries(dof))
+              {
+                double *const node = values
+                                     + partitioner.global_to_local(entry.first)
+                                         * std::size_t(n_components);
+                for (unsigned int c = 0; c < n_components; ++c)
+                  node[c] += entry.second * cell_moments[c];
+              }
         }
   }
 
 
 
   template <int dim>
+  template <bool damage>
   void
-  ErrorEstimator<dim>::project_to_nodes(const double *entries)
+  ErrorEstimator<dim>::project_to_nodes()
   {
     // sum_K int_K phi_i q_h for every component q of the recovered fields,
-    // divided by the lumped mass; hanging nodes then take their parents'
-    // average.
-    recovered = 0;
-    // The cells' integrals in the threads, each into its own slice of
-    // moments, then added into the nodes in the cells' order.
-    const unsigned int  n_nodes  = recovery_fe->n_dofs_per_cell();
-    const unsigned int  n_blocks = recovered.n_blocks();
-    std::vector<double> moments(cells->size() * n_blocks * n_nodes);
+    // from the moments of the first pass, in one exchange; divided by the
+    // lumped mass; then the hanging nodes take their parents' average.
+    const auto       &partitioner = *lumped_mass.get_partitioner();
+    const std::size_t n_local
+      = partitioner.locally_owned_size() + partitioner.n_ghost_indices();
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      n_local,
+      [&](const std::size_t begin, const std::size_t end) {
+        gather_nodes<damage>(begin, end);
+      },
+      256);
+    add_constrained_cells();
+    recovered.compress(VectorOperation::add);
+    double *const values = recovered.begin();
+    for (unsigned int j = 0; j < partitioner.locally_owned_size(); ++j)
+      if (lumped_mass.local_element(j) > 0)
+        for (unsigned int c = 0; c < n_components; ++c)
+          values[j * std::size_t(n_components) + c]
+            /= lumped_mass.local_element(j);
+    recovered.update_ghost_values();
+    for (std::size_t h = 0; h < hanging_nodes.size(); ++h)
+      for (unsigned int c = 0; c < n_components; ++c)
+        {
+          double value = 0;
+          for (unsigned int p = hanging_start[h]; p < hanging_start[h + 1]; ++p)
+            value
+              += hanging_parents[p].second
+                 * values[hanging_parents[p].first * std::size_t(n_components)
+                          + c];
+          values[hanging_nodes[h] * std::size_t(n_components) + c] = value;
+        }
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  void
+  ErrorEstimator<dim>::second_pass(const std::size_t i)
+  {
+    // On cell i: the squared distances between the recovered fields,
+    // sum_a N_a(x_q) v_a, and the discrete ones kept by the first pass, and
+    // the cell's indicator (each cell writes only its own entries).
+    constexpr unsigned int    n_c    = n_fields<dim, damage>;
+    const auto                JxW    = history->JxW((*cells)[i]);
+    const double *const       f      = &point_values[i * n_q * n_c];
+    const double *const       values = recovered.begin();
+    const unsigned int *const nodes  = &node_locals[i * n_nodes];
+    double                    stress = 0, strain = 0, gradient = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        double star[n_c] = {};
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          {
+            const double        N = kinematics->shape_value(q, a);
+            const double *const v = values + std::size_t(nodes[a]) * n_c;
+            for (unsigned int c = 0; c < n_c; ++c)
+              star[c] += N * v[c];
+          }
+        // The differences as tensors, so that their norms are summed as
+        // SymmetricTensor's scalar_product() sums them.
+        SymmetricTensor<2, dim> stress_error, strain_error;
+        Tensor<1, dim>          gradient_error;
+        for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+          {
+            stress_error.access_raw_entry(c) = star[c] - f[q * n_c + c];
+            strain_error.access_raw_entry(c)
+              = star[n_tensor<dim> + c] - f[q * n_c + n_tensor<dim> + c];
+            if (damage && c < dim)
+              gradient_error[c] = star[2 * n_tensor<dim> + c]
+                                  - f[q * n_c + 2 * n_tensor<dim> + c];
+          }
+        stress += scalar_product(stress_error, stress_error) * JxW[q];
+        strain += scalar_product(strain_error, strain_error) * JxW[q];
+        gradient += gradient_error.norm_square() * JxW[q];
+      }
+    CellNorms &norm = norms[i];
+    norm.stress     = stress;
+    norm.strain     = strain;
+    norm.damage     = gradient * damage_weights[i];
+    const float eta = std::sqrt(norm.stress) + std::sqrt(norm.strain)
+                      + std::sqrt(norm.damage);
+    const unsigned int index = (*cells)[i]->active_cell_index();
+    indicators[index]        = std::max(indicators[index], eta);
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  void
+  ErrorEstimator<dim>::passes(const unsigned int          n,
+                              const double               *entries,
+                              const ViscoplasticLaw<dim> &law)
+  {
+    // Two passes over the cells in the threads, around the projection: the
+    // moments (and the time part), then the norms. The ghost entries are
+    // written by the projection's sums, so they are marked as such first.
+    recovered.zero_out_ghost_values();
     parallel::apply_to_subranges(
       std::size_t(0),
       cells->size(),
       [&](const std::size_t begin, const std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
-          cell_moments(i, entries, &moments[i * n_blocks * n_nodes]);
+          norms[i].time = first_pass<damage>(i, entries, law, n == 0);
       },
       64);
-    std::vector<types::global_dof_index> dofs(n_nodes);
-    Vector<double>                       cell_vector(n_nodes);
-    for (std::size_t i = 0; i < cells->size(); ++i)
-      {
-        const double *cell_moments = &moments[i * n_blocks * n_nodes];
-        // Most cells have no hanging node: their sums go straight into the
-        // local storage; the others through the constraints.
-        if (!has_constraints[i])
-          for (unsigned int b = 0; b < n_blocks; ++b)
-            for (unsigned int a = 0; a < n_nodes; ++a)
-              recovered.block(b).local_element(node_locals[i * n_nodes + a])
-                += cell_moments[b * n_nodes + a];
-        else
-          {
-            std::copy_n(node_indices.begin() + i * n_nodes,
-                        n_nodes,
-                        dofs.begin());
-            for (unsigned int b = 0; b < n_blocks; ++b)
-              {
-                std::copy_n(cell_moments + b * n_nodes,
-                            n_nodes,
-                            cell_vector.begin());
-                constraints.distribute_local_to_global(cell_vector,
-                                                       dofs,
-                                                       recovered.block(b));
-              }
-          }
-      }
-    recovered.compress(VectorOperation::add);
-    for (unsigned int b = 0; b < recovered.n_blocks(); ++b)
-      {
-        auto &block = recovered.block(b);
-        for (unsigned int j = 0; j < block.locally_owned_size(); ++j)
-          if (lumped_mass.local_element(j) > 0)
-            block.local_element(j) /= lumped_mass.local_element(j);
-        constraints.distribute(block);
-      }
-    recovered.update_ghost_values();
-  }
-
-
-
-  template <int dim>
-  void
-  ErrorEstimator<dim>::recovered_values(const std::size_t        i,
-                                        const unsigned int       q,
-                                        SymmetricTensor<2, dim> &stress,
-                                        SymmetricTensor<2, dim> &strain,
-                                        Tensor<1, dim>          &gradient) const
-  {
-    // The recovered fields at point q of cell i: sum_a N_a(x_q) v_a.
-    const unsigned int n_nodes = recovery_fe->n_dofs_per_cell();
-    for (unsigned int a = 0; a < n_nodes; ++a)
-      {
-        const auto   node = node_locals[i * n_nodes + a];
-        const double N    = kinematics->shape_value(q, a);
-        for (unsigned int c = 0; c < n_tensor<dim>; ++c)
-          {
-            stress.access_raw_entry(c)
-              += N * recovered.block(c).local_element(node);
-            strain.access_raw_entry(c)
-              += N * recovered.block(n_tensor<dim> + c).local_element(node);
-          }
-        if (with_damage)
-          for (unsigned int d = 0; d < dim; ++d)
-            gradient[d]
-              += N * recovered.block(2 * n_tensor<dim> + d).local_element(node);
-      }
-  }
-
-
-
-  template <int dim>
-  typename ErrorEstimator<dim>::CellNorms
-  ErrorEstimator<dim>::cell_norms(const std::size_t           i,
-                                  const double               *entries,
-                                  const ViscoplasticLaw<dim> &law,
-                                  const bool                  initial)
-  {
-    // The squared distances between the recovered and the discrete fields
-    // on cell i, and the squared norm of G_n - G_0 (at n = 0, G_0 is
-    // stored instead).
-    const auto        &cell   = (*cells)[i];
-    const auto         points = history->get_data(cell);
-    const auto         JxW    = history->JxW(cell);
-    const unsigned int n_q    = JxW.size();
-    PointValues        values;
-    evaluate_points(i, entries, values);
-    const auto &strains   = values.strains;
-    const auto &gradients = values.gradients;
-    const auto &damage    = values.damage;
-    CellNorms   norms;
-    for (unsigned int q = 0; q < n_q; ++q)
-      {
-        SymmetricTensor<2, dim> stress_star, strain_star;
-        Tensor<1, dim>          gradient_star;
-        recovered_values(i, q, stress_star, strain_star, gradient_star);
-        const auto stress_error = stress_star - points[q].stress;
-        const auto strain_error = strain_star - strains[q];
-        norms.stress += scalar_product(stress_error, stress_error) * JxW[q];
-        norms.strain += scalar_product(strain_error, strain_error) * JxW[q];
-        if (with_damage)
-          norms.damage += (gradient_star - gradients[q]).norm_square() * JxW[q];
-        const auto rate = law.rate(points[q].stress, strains[q], damage[q]);
-        if (initial)
-          points[q].initial_rate = rate;
-        const auto change = rate - points[q].initial_rate;
-        norms.time += scalar_product(change, change) * JxW[q];
-      }
-    const double h_over_pi = cell->diameter() / numbers::PI;
-    norms.damage *= h_over_pi * h_over_pi;
-    return norms;
+    project_to_nodes<damage>();
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      cells->size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          second_pass<damage>(i);
+      },
+      64);
   }
 
 
@@ -366,30 +366,30 @@ namespace VPContact
                                      const ViscoplasticLaw<dim> &law,
                                      const double                youngs_modulus)
   {
-    project_to_nodes(entries);
-    // The cells' norms in the threads, then summed in the cells' order (the
-    // same bits with any number of threads).
-    std::vector<CellNorms> norms(cells->size());
-    parallel::apply_to_subranges(
-      std::size_t(0),
-      cells->size(),
-      [&](const std::size_t begin, const std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
-          norms[i] = cell_norms(i, entries, law, n == 0);
-      },
-      64);
+    // The number of recovered components is fixed at compile time in the
+    // passes, so that their loops over the components are unrolled.
+    if (with_damage)
+      passes<true>(n, entries, law);
+    else
+      passes<false>(n, entries, law);
+    return sum_norms(k, youngs_modulus);
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  ErrorEstimator<dim>::sum_norms(const double k, const double youngs_modulus)
+  {
+    // The cells' norms summed in the cells' order (the same bits with any
+    // number of threads), then over the ranks.
     double sums[4] = {0, 0, 0, 0};
-    for (std::size_t i = 0; i < norms.size(); ++i)
+    for (const CellNorms &c : norms)
       {
-        const CellNorms &c = norms[i];
         sums[0] += c.stress;
         sums[1] += c.strain;
         sums[2] += c.damage;
         sums[3] += c.time;
-        const float eta
-          = std::sqrt(c.stress) + std::sqrt(c.strain) + std::sqrt(c.damage);
-        const unsigned int index = (*cells)[i]->active_cell_index();
-        indicators[index]        = std::max(indicators[index], eta);
       }
     Utilities::MPI::sum(ArrayView<const double>(sums, 4),
                         triangulation->get_communicator(),

@@ -136,6 +136,17 @@ namespace VPContact
       const ArrayView<const SymmetricTensor<2, dim>> weighted_stress,
       Vector<double>                                &cell_vector) const;
 
+    /**
+     * The gradients of the scalar shape functions at the points of @p cell:
+     * grad N_a(x_q) at q * nodes_per_cell() + a (for the passes that need
+     * several fields of a cell at once, from its nodal_values()).
+     */
+    const Tensor<1, dim> *
+    shape_gradients(const cell_iterator &cell) const
+    {
+      return &gradients[cell->active_cell_index() * n_q_points * n_nodes];
+    }
+
     /// Quadrature point @p q of @p cell in real space.
     const Point<dim> &
     point(const cell_iterator &cell, const unsigned int q) const

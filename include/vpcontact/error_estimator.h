@@ -14,13 +14,14 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/la_parallel_block_vector.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <array>
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace VPContact
@@ -127,44 +128,55 @@ namespace VPContact
     restore_running_maxima(const std::map<std::string, double> &maxima);
 
   private:
+    /// The most quadrature points and nodes per cell (the 2^dim Gauss
+    /// points and vertices of Q1).
+    static constexpr unsigned int max_points = 8;
+    static constexpr unsigned int max_nodes  = 8;
     /// The squared norms of one cell, for the sums of the space and time
     /// parts.
     struct CellNorms
     {
       double stress = 0, strain = 0, damage = 0, time = 0;
     };
-    /// The solution at the points of one cell (at most 8: the 2^dim Gauss
-    /// points of Q1).
-    struct PointValues
-    {
-      static constexpr unsigned int                   max_points = 8;
-      std::array<SymmetricTensor<2, dim>, max_points> strains;
-      std::array<Tensor<1, dim>, max_points>          gradients;
-      std::array<double, max_points>                  damage;
-    };
-    void
-    evaluate_points(const std::size_t i,
-                    const double     *entries,
-                    PointValues      &values) const;
     void
     setup_nodes_and_mass();
     void
-    cell_moments(const std::size_t i,
-                 const double     *entries,
-                 double           *moments) const;
+    setup_gather();
     void
-    project_to_nodes(const double *entries);
+    setup_hanging_nodes();
     void
-    recovered_values(const std::size_t        i,
-                     const unsigned int       q,
-                     SymmetricTensor<2, dim> &stress,
-                     SymmetricTensor<2, dim> &strain,
-                     Tensor<1, dim>          &gradient) const;
-    CellNorms
-    cell_norms(const std::size_t           i,
+    setup_cell_data();
+    template <bool damage>
+    void
+    evaluate_fields(const std::size_t        i,
+                    const double            *entries,
+                    SymmetricTensor<2, dim> *strain,
+                    Tensor<1, dim>          *gradient,
+                    double                  *zeta) const;
+    template <bool damage>
+    double
+    first_pass(const std::size_t           i,
                const double               *entries,
                const ViscoplasticLaw<dim> &law,
                const bool                  initial);
+    template <bool damage>
+    void
+    gather_nodes(const std::size_t begin, const std::size_t end);
+    void
+    add_constrained_cells();
+    template <bool damage>
+    void
+    project_to_nodes();
+    template <bool damage>
+    void
+    second_pass(const std::size_t i);
+    template <bool damage>
+    void
+    passes(const unsigned int          n,
+           const double               *entries,
+           const ViscoplasticLaw<dim> &law);
+    ErrorEstimate
+    sum_norms(const double k, const double youngs_modulus);
 
     bool active = true;
 
@@ -173,22 +185,52 @@ namespace VPContact
     const CellKinematics<dim>              *kinematics    = nullptr;
     StressHistory<dim>                     *history       = nullptr;
     bool                                    with_damage   = false;
+    /// The quadrature points and the nodes of a cell (the same on all).
+    unsigned int n_q     = 0;
+    unsigned int n_nodes = 0;
+    /// The number of recovered components: the stress and the strain
+    /// (n_independent_components each) and, with damage, the damage
+    /// gradient (dim).
+    unsigned int n_components = 0;
 
     /// Q1 or P1, the scalar element of the mesh's cells.
     std::unique_ptr<FiniteElement<dim>> recovery_fe;
     DoFHandler<dim>                     recovery_dofs;
     AffineConstraints<double>           constraints;
-    /// The recovered fields, one block per component: the stress, the
-    /// strain (n_independent_components each) and, with damage, the damage
-    /// gradient (dim).
-    LinearAlgebra::distributed::BlockVector<double> recovered;
-    LinearAlgebra::distributed::Vector<double>      lumped_mass;
+    /// The recovered fields in one ghosted vector, all components of a node
+    /// side by side: node j's (scalar local index) component c at local
+    /// entry j * n_components + c. One exchange per step moves them all,
+    /// and a cell reads one cache line per node.
+    LinearAlgebra::distributed::Vector<double> recovered;
+    LinearAlgebra::distributed::Vector<double> lumped_mass;
     /// The nodes of each owned cell: global indices, their positions in the
-    /// local storage (owned and ghost) of the recovered fields, and whether
+    /// local storage (owned and ghost) of the scalar layout, and whether
     /// the cell has a constrained (hanging) node.
     std::vector<types::global_dof_index> node_indices;
     std::vector<unsigned int>            node_locals;
     std::vector<bool>                    has_constraints;
+    /// For each local node, the (cell, node) slots i * n_nodes + a of the
+    /// cells without hanging nodes that share it, in the cells' order
+    /// (compressed rows: node j's at slots[slot_start[j]...]); the cells
+    /// with hanging nodes are listed apart.
+    std::vector<unsigned int> slot_start, slots;
+    std::vector<std::size_t>  constrained_cells;
+    /// The constrained nodes of the owned cells (scalar local indices) and
+    /// the nodes and weights they take their values from.
+    std::vector<unsigned int>                    hanging_nodes;
+    std::vector<unsigned int>                    hanging_start;
+    std::vector<std::pair<unsigned int, double>> hanging_parents;
+    /// (h_K / pi)^2 of each owned cell.
+    std::vector<double> damage_weights;
+
+    /// Per step, kept between the passes (allocated once per mesh): the
+    /// cells' moments int_K phi_a q_h (component c of node a of cell i at
+    /// (i * n_nodes + a) * n_components + c), the discrete fields at every
+    /// point in the same order of components ((i * n_q + q) * n_components
+    /// + c), and every cell's norms.
+    std::vector<double>    moments;
+    std::vector<double>    point_values;
+    std::vector<CellNorms> norms;
 
     ErrorEstimate largest_sum, largest_part;
     Vector<float> indicators;
