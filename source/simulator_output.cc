@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 namespace VPContact
 {
@@ -96,7 +97,9 @@ namespace VPContact
     };
 
     // DataOut, with the patches and names it built handed out, so that a
-    // FieldWriter can write them while the vectors change.
+    // FieldWriter can write them while the vectors change. The patches are
+    // moved out rather than copied: a copy allocated every cell's patch
+    // data once more, in the foreground, and freed the DataOut's after.
     template <int dim>
     class PatchDataOut : public DataOut<dim>
     {
@@ -104,7 +107,7 @@ namespace VPContact
       FieldPatches<dim>
       take_patches()
       {
-        return {this->get_patches(),
+        return {std::move(this->patches),
                 this->get_dataset_names(),
                 this->get_nonscalar_data_ranges()};
       }
