@@ -31,17 +31,19 @@ namespace VPContact
                           const bool                   in_background)
   {
     Assert(!pending(), ExcMessage("wait() for the previous write first"));
-    // The task owns the patches; the file is written only once the whole
-    // piece is in memory. It holds them through a shared pointer, so that
-    // no copy of the task copies them (a copy of the patches would double
-    // the memory of the output at its peak).
-    // It returns what went wrong, or an empty string.
+    // The task owns the patches (or what builds them); the file is written
+    // only once the whole piece is in memory. It holds them through a shared
+    // pointer, so that no copy of the task copies them (a copy of the patches
+    // would double the memory of the output at its peak). It returns what went
+    // wrong, or an empty string.
     auto task
-      = [fields = std::make_shared<const FieldPatches<dim>>(std::move(fields)),
+      = [fields = std::make_shared<FieldPatches<dim>>(std::move(fields)),
          filename,
          flags]() -> std::string {
       try
         {
+          if (fields->build)
+            fields->build(fields->patches);
           std::ostringstream vtu;
           DataOutBase::write_vtu(fields->patches,
                                  fields->names,
