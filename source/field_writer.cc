@@ -1,5 +1,5 @@
 // FieldWriter: the .vtu piece of a field output, compressed and written in a
-// task of deal.II's threads or at once.
+// thread of its own or at once.
 #include <vpcontact/field_writer.h>
 #include <vpcontact/output_writer.h>
 
@@ -17,8 +17,8 @@ namespace VPContact
   {
     // A run that stops with an error leaves its last piece whole: wait
     // for it. What went wrong with it no longer matters then.
-    if (write.joinable())
-      write.join();
+    if (write.valid())
+      write.wait();
   }
 
 
@@ -31,18 +31,19 @@ namespace VPContact
                           const bool                   in_background)
   {
     Assert(!pending(), ExcMessage("wait() for the previous write first"));
-    // The task owns the patches; the file is written only once the whole
-    // piece is in memory. It holds them through a shared pointer:
-    // Threads::new_task() takes the task as a std::function, which copies
-    // what the lambda captures, and a copy of the patches would double the
-    // memory of the output at its peak.
-    // It returns what went wrong, or an empty string.
+    // The task owns the patches (or what builds them); the file is written
+    // only once the whole piece is in memory. It holds them through a shared
+    // pointer, so that no copy of the task copies them (a copy of the patches
+    // would double the memory of the output at its peak). It returns what went
+    // wrong, or an empty string.
     auto task
-      = [fields = std::make_shared<const FieldPatches<dim>>(std::move(fields)),
+      = [fields = std::make_shared<FieldPatches<dim>>(std::move(fields)),
          filename,
          flags]() -> std::string {
       try
         {
+          if (fields->build)
+            fields->build(fields->patches);
           std::ostringstream vtu;
           DataOutBase::write_vtu(fields->patches,
                                  fields->names,
@@ -65,7 +66,7 @@ namespace VPContact
     };
     started = true;
     if (in_background)
-      write = Threads::new_task(std::move(task));
+      write = std::async(std::launch::async, std::move(task));
     else
       failure = task();
   }
@@ -88,12 +89,8 @@ namespace VPContact
     if (!started)
       return "";
     started = false;
-    if (write.joinable())
-      {
-        write.join();
-        failure = write.return_value();
-        write   = Threads::Task<std::string>();
-      }
+    if (write.valid())
+      failure = write.get();
     return failure;
   }
 

@@ -2,6 +2,7 @@
 // the right-hand side of a step, which carries the stress history.
 #include <vpcontact/simulator.h>
 
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
@@ -40,6 +41,39 @@ namespace VPContact
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int j = i + 1; j < n; ++j)
           cell_matrix(i, j) = cell_matrix(j, i);
+    }
+
+
+
+    // Add what a cell computed for the right-hand side (a
+    // Simulator::CellRhs) to @p rhs: a plain cell's entries straight to the
+    // local storage, at the position of each degree of freedom in the
+    // rank's contiguous range starting at @p first_owned (what
+    // distribute_local_to_global() does for them, without its lookups of
+    // the constraints and of Trilinos' local index); the other cells'
+    // through @p constraints, with the lift of an inhomogeneous one.
+    template <typename CellRhs>
+    void
+    add_to_rhs(const CellRhs                   &copy,
+               const AffineConstraints<double> &constraints,
+               const types::global_dof_index    first_owned,
+               TrilinosWrappers::MPI::Vector   &rhs)
+    {
+      if (copy.plain)
+        {
+          double *const entries = rhs.begin();
+          for (unsigned int i = 0; i < copy.dof_indices.size(); ++i)
+            entries[copy.dof_indices[i] - first_owned] += copy.cell_rhs(i);
+        }
+      else if (copy.inhomogeneous)
+        constraints.distribute_local_to_global(copy.cell_rhs,
+                                               copy.dof_indices,
+                                               rhs,
+                                               copy.cell_matrix);
+      else
+        constraints.distribute_local_to_global(copy.cell_rhs,
+                                               copy.dof_indices,
+                                               rhs);
     }
   } // namespace
 
@@ -147,7 +181,16 @@ namespace VPContact
 
     // The cells in the threads of WorkStream, each into its own CellRhs;
     // their sums into displacement.rhs one at a time, in the order of the
-    // cells.
+    // cells, so that every entry is the same sum with any number of
+    // threads. The sums are the serial part of the pass, kept short by
+    // add_to_rhs(); a chunk of 64 cells per item keeps the pipeline's own
+    // cost per cell small.
+    const IndexSet &owned = displacement.owned;
+    AssertThrow(owned.is_contiguous()
+                  && displacement.rhs.trilinos_vector().Map().LinearMap(),
+                ExcInternalError());
+    const types::global_dof_index first_owned
+      = (owned.n_elements() > 0 ? *owned.begin() : 0);
     displacement.rhs = 0.;
     WorkStream::run(
       owned_cells.begin(),
@@ -162,21 +205,15 @@ namespace VPContact
         add_cell_loads_and_lifts(*cell, body_force, scratch, copy);
       },
       [&](const CellRhs &copy) {
-        if (copy.inhomogeneous)
-          constraints.distribute_local_to_global(copy.cell_rhs,
-                                                 copy.dof_indices,
-                                                 displacement.rhs,
-                                                 copy.cell_matrix);
-        else
-          constraints.distribute_local_to_global(copy.cell_rhs,
-                                                 copy.dof_indices,
-                                                 displacement.rhs);
+        add_to_rhs(copy, constraints, first_owned, displacement.rhs);
       },
       AssemblyScratch(mapping,
                       fe,
                       quadrature,
                       discretization.face_quadrature()),
-      CellRhs(displacement.shape_functions.size()));
+      CellRhs(displacement.shape_functions.size()),
+      2 * MultithreadInfo::n_threads(),
+      64);
     displacement.rhs.compress(VectorOperation::add);
   }
 
@@ -207,6 +244,12 @@ namespace VPContact
       cell_kinematics.damage(cell,
                              solution_entries,
                              make_array_view(scratch.damage_values));
+    if (with_damage
+        && scratch.damage_source_thread != std::this_thread::get_id())
+      {
+        scratch.damage_source        = &damage_model.source();
+        scratch.damage_source_thread = std::this_thread::get_id();
+      }
     const auto history = stress_history.get_data(cell);
     const auto JxW     = std::as_const(stress_history).JxW(cell);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -220,11 +263,11 @@ namespace VPContact
                                                       scratch.damage_values[q]);
         if (with_damage)
           point.damage_source
-            = damage_model.source().value(scratch.strains[q],
-                                          point.stress,
-                                          scratch.damage_values[q],
-                                          cell_kinematics.point(cell, q),
-                                          previous_time);
+            = scratch.damage_source->value(scratch.strains[q],
+                                           point.stress,
+                                           scratch.damage_values[q],
+                                           cell_kinematics.point(cell, q),
+                                           previous_time);
         scratch.weighted_predictor[q] = point.predictor * JxW[q];
       }
     cell_kinematics.subtract_stress_work(cell,
@@ -246,10 +289,18 @@ namespace VPContact
   {
     // The loads, and the matrix that lifts an inhomogeneous constraint,
     // need the FEValues of the cell: only cells with a body force, a
-    // traction face or such a constraint reinitialize it.
+    // traction face or such a constraint reinitialize it. Only a
+    // constrained degree of freedom can be inhomogeneously so.
     copy.inhomogeneous = false;
+    copy.plain         = true;
     for (const auto dof : copy.dof_indices)
-      copy.inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
+      if (constraints.is_constrained(dof))
+        {
+          copy.plain = false;
+          copy.inhomogeneous |= constraints.is_inhomogeneously_constrained(dof);
+        }
+      else if (!displacement.owned.is_element(dof))
+        copy.plain = false;
     if (body_force || copy.inhomogeneous)
       scratch.fe_values.reinit(cell);
     if (body_force || cell->at_boundary())

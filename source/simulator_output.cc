@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 namespace VPContact
 {
@@ -95,20 +96,75 @@ namespace VPContact
       }
     };
 
-    // DataOut, with the patches and names it built handed out, so that a
-    // FieldWriter can write them while the vectors change.
+    // DataOut, with the patches it built handed out, so that a FieldWriter
+    // can write them. They are moved out rather than copied: a copy
+    // allocated every cell's patch data once more.
     template <int dim>
     class PatchDataOut : public DataOut<dim>
     {
     public:
-      FieldPatches<dim>
-      take_patches()
+      std::vector<DataOutBase::Patch<dim, dim>>
+      release_patches()
       {
-        return {this->get_patches(),
-                this->get_dataset_names(),
-                this->get_nonscalar_data_ranges()};
+        return std::move(this->patches);
+      }
+
+      /// The names of the fields and which of them form vectors, known once
+      /// the vectors are added.
+      std::vector<std::string>
+      field_names() const
+      {
+        return this->get_dataset_names();
+      }
+      VectorRanges
+      vector_ranges() const
+      {
+        return this->get_nonscalar_data_ranges();
       }
     };
+
+
+
+    // What the fields of one output are built from: a DataOut with the
+    // vectors and postprocessors it refers to, all owned here, so that the
+    // patches can be built in the background while the simulator's vectors
+    // change (see Simulator::write_fields()).
+    template <int dim>
+    struct FieldSources
+    {
+      PatchDataOut<dim>                  data_out;
+      TrilinosWrappers::MPI::BlockVector solution, status, traction;
+      ContactStatusField<dim>            status_field;
+      TractionField<dim>                 traction_field;
+      Vector<double>                     von_mises, subdomain;
+      std::vector<Vector<double>>        components;
+    };
+
+
+
+    // Copies of the cell fields into @p sources, added to its DataOut: the
+    // cell averages of the stress (its von Mises norm and its @p components)
+    // and the rank @p owner that owns the cells.
+    template <int dim>
+    void
+    add_cell_fields(FieldSources<dim>                 &sources,
+                    const Vector<double>              &von_mises,
+                    const std::vector<Vector<double>> &components,
+                    const types::subdomain_id          owner)
+    {
+      sources.von_mises  = von_mises;
+      sources.components = components;
+      sources.data_out.add_data_vector(sources.von_mises, "von_mises");
+      const auto names_of_stress = stress_component_names<dim>();
+      for (unsigned int c = 0; c < components.size(); ++c)
+        sources.data_out.add_data_vector(sources.components[c],
+                                         names_of_stress[c]);
+      sources.subdomain.reinit(von_mises.size());
+      sources.subdomain = owner;
+      sources.data_out.add_data_vector(sources.subdomain, "subdomain");
+    }
+
+
 
     // A ghosted copy of @p owned in the blocks of the numbering
     // (displacement, damage), each with contiguous owned indices: what
@@ -405,8 +461,12 @@ namespace VPContact
                                const std::vector<Vector<double>> &components)
   {
     // The solution: displacement (a vector) and, in damage scenes, zeta;
-    // the stresses per cell, and the rank that owns each cell.
-    PatchDataOut<dim>        data_out;
+    // the stresses per cell, and their ranks. Copies go to the DataOut
+    // here, where the ranks exchange ghost values together; its patches
+    // (FEValues on every cell, the larger cost) are built with the write,
+    // in the background: the mesh does not change before it is waited for.
+    const auto               sources  = std::make_shared<FieldSources<dim>>();
+    PatchDataOut<dim>       &data_out = sources->data_out;
     std::vector<std::string> names(dim, "displacement");
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -425,39 +485,36 @@ namespace VPContact
                              displacement.owned.size(),
                              mpi_communicator);
     };
-    const TrilinosWrappers::MPI::BlockVector solution_blocks
-      = blocks(solution_owned);
-    data_out.add_data_vector(solution_blocks,
+    sources->solution = blocks(solution_owned);
+    data_out.add_data_vector(sources->solution,
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
 
-    // Contact nodes: the status (0 none, 1 stick, 2 slip) in one nodal
-    // vector, the tangential traction sigma_tau in another.
-    TrilinosWrappers::MPI::BlockVector status_blocks, traction_blocks;
-    const ContactStatusField<dim>      status_field;
-    const TractionField<dim>           traction_field;
+    // Contact nodes: status (0 none, 1 stick, 2 slip), traction sigma_tau.
     if (friction_problem)
       {
         TrilinosWrappers::MPI::Vector status(solution_owned);
         TrilinosWrappers::MPI::Vector traction(solution_owned);
         friction_problem->fill_output(status, traction);
-        status_blocks   = blocks(status);
-        traction_blocks = blocks(traction);
-        data_out.add_data_vector(status_blocks, status_field);
-        data_out.add_data_vector(traction_blocks, traction_field);
+        sources->status   = blocks(status);
+        sources->traction = blocks(traction);
+        data_out.add_data_vector(sources->status, sources->status_field);
+        data_out.add_data_vector(sources->traction, sources->traction_field);
       }
 
-    data_out.add_data_vector(von_mises, "von_mises");
-    const auto names_of_stress = stress_component_names<dim>();
-    for (unsigned int c = 0; c < components.size(); ++c)
-      data_out.add_data_vector(components[c], names_of_stress[c]);
-    Vector<double> subdomain(triangulation.n_active_cells());
-    subdomain = triangulation.locally_owned_subdomain();
-    data_out.add_data_vector(subdomain, "subdomain");
-
-    data_out.build_patches();
-    output_writer.write_fields(data_out.take_patches(),
+    add_cell_fields(*sources,
+                    von_mises,
+                    components,
+                    triangulation.locally_owned_subdomain());
+    FieldPatches<dim> fields;
+    fields.names         = data_out.field_names();
+    fields.vector_ranges = data_out.vector_ranges();
+    fields.build = [sources](std::vector<DataOutBase::Patch<dim, dim>> &p) {
+      sources->data_out.build_patches();
+      p = sources->data_out.release_patches();
+    };
+    output_writer.write_fields(std::move(fields),
                                n,
                                time_discretization.time(n),
                                mpi_communicator);

@@ -1,12 +1,13 @@
-// Writing the .vtu piece of one field output, in a task of deal.II's threads
-// while the time steps go on, or at once.
+// Writing the .vtu piece of one field output, in a thread of its own while the
+// time steps go on, or at once.
 #ifndef vpcontact_field_writer_h
 #define vpcontact_field_writer_h
 
 #include <deal.II/base/data_out_base.h>
-#include <deal.II/base/thread_management.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 
+#include <functional>
+#include <future>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -35,14 +36,22 @@ namespace VPContact
     std::vector<DataOutBase::Patch<dim, dim>> patches;
     std::vector<std::string>                  names;
     VectorRanges                              vector_ranges;
+    /// If set, fills the patches where the piece is written (in the
+    /// background, with what it owns), before they are written: building
+    /// them costs more than writing them.
+    std::function<void(std::vector<DataOutBase::Patch<dim, dim>> &)> build;
   };
 
   /**
-   * Compresses and writes the .vtu piece of one field output. In a task of
-   * its own, the compression and the write overlap with the next steps, as
-   * ASPECT's "Write in background thread" does. The piece is written
-   * through a temporary file and a rename, so that it is on disk either whole
-   * or not at all.
+   * Builds (if FieldPatches::build is set), compresses and writes the
+   * .vtu piece of one field output. In a thread of its own, this overlaps
+   * with the next steps, as ASPECT's "Write in background thread" does. Not
+   * a task of deal.II's threads (TBB): a thread that waits for the end of a
+   * parallel loop runs other tasks of its arena meanwhile, so the loops of
+   * the next steps (right-hand side, stress update, DataOut) could take up
+   * the whole write and wait for it. The piece is written through a
+   * temporary file and a rename, so that it is on disk either whole or not
+   * at all.
    *
    * One write at a time: start() waits for the previous one. A failure in
    * the background is reported by wait(), not thrown there, so that the
@@ -56,9 +65,9 @@ namespace VPContact
     ~FieldWriter();
 
     /**
-     * Write @p fields to the file @p filename with @p flags: in a task
-     * (Threads::new_task) if @p in_background, else before returning (a failure
-     * is still reported by wait()).
+     * Write @p fields to the file @p filename with @p flags: in a thread
+     * (std::async) if @p in_background, else before returning (a failure is
+     * still reported by wait()).
      */
     void
     start(FieldPatches<dim>          &&fields,
@@ -78,7 +87,7 @@ namespace VPContact
     wait();
 
   private:
-    Threads::Task<std::string> write;
+    std::future<std::string> write;
     /// Whether a write was started and not yet waited for, and what went
     /// wrong with a write done at once.
     bool        started = false;

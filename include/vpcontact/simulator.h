@@ -42,6 +42,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <thread>
 
 namespace VPContact
 {
@@ -152,10 +153,17 @@ namespace VPContact
       std::vector<double>                  damage_values;
       /// On all shape functions of the cell, the damage ones included.
       Vector<double> cell_vector;
+      /// The damage source of the thread that last used this scratch
+      /// (DamageModel::source() looks it up in a thread-local storage, a
+      /// lock each time): fetched again only when the thread changes.
+      const DamageSource<dim> *damage_source = nullptr;
+      std::thread::id          damage_source_thread;
     };
 
     /// What a cell adds to the right-hand side: its vector and, where a
-    /// constraint is inhomogeneous, its matrix (see assemble_rhs()).
+    /// constraint is inhomogeneous, its matrix (see assemble_rhs()). A
+    /// plain cell has only locally owned, unconstrained degrees of freedom:
+    /// its entries are added to the vector's local storage directly.
     struct CellRhs
     {
       explicit CellRhs(const unsigned int dofs_per_cell)
@@ -167,6 +175,7 @@ namespace VPContact
       FullMatrix<double>                   cell_matrix;
       std::vector<types::global_dof_index> dof_indices;
       bool                                 inhomogeneous = false;
+      bool                                 plain         = false;
     };
 
     // simulator.cc
