@@ -1,5 +1,6 @@
 // The command line: help, parameter listing, and running a scene.
 #include <vpcontact/application.h>
+#include <vpcontact/blas_threads.h>
 #include <vpcontact/exit_agreement.h>
 #include <vpcontact/input_error.h>
 #include <vpcontact/parameter_file.h>
@@ -28,24 +29,6 @@ namespace VPContact
 {
   namespace
   {
-    // openblas_set_num_threads() is OpenBLAS's own, not part of the BLAS
-    // interface, so it is looked up at run time (with another BLAS this does
-    // nothing). Debian's OpenBLAS comes as libblas.so.3 and libopenblas.so.0,
-    // each with its own thread count, and the libraries may call either.
-    void
-    set_blas_threads(const unsigned int n_threads)
-    {
-      using Setter = void (*)(int);
-      for (const char *library : {"libblas.so.3", "libopenblas.so.0"})
-        if (void *handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD))
-          {
-            if (const auto setter = reinterpret_cast<Setter>(
-                  dlsym(handle, "openblas_set_num_threads")))
-              setter(static_cast<int>(n_threads));
-            dlclose(handle);
-          }
-    }
-
     void
     print_usage(std::ostream &out)
     {
@@ -297,12 +280,13 @@ namespace VPContact
     if (const std::string problem = petsc_options_problem(); !problem.empty())
       return report_error_before_mpi(problem);
     // deal.II's threads: the cores of the node divided among its ranks
-    // (DEAL_II_NUM_THREADS may lower it). The BLAS of the factorizations
-    // gets as many, where it can start threads, instead of one per core in
-    // every rank.
+    // (DEAL_II_NUM_THREADS may lower it). The BLAS gets one (see
+    // set_blas_threads()), and as many as deal.II's only while a
+    // factorization runs (BlasThreads), instead of one per core in every
+    // rank.
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
     install_petsc_error_messages();
-    set_blas_threads(MultithreadInfo::n_threads());
+    set_blas_threads(1);
     const MPI_Comm communicator = MPI_COMM_WORLD;
     // Rank 0's command line for all ranks, as its parameter file: under
     // mpirun in MPMD mode the ranks may be given different ones (--resume

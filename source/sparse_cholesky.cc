@@ -1,8 +1,10 @@
 // The CHOLMOD factorization of the displacement matrix on one process, and
 // the solves with it.
+#include <vpcontact/blas_threads.h>
 #include <vpcontact/sparse_cholesky.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
@@ -130,7 +132,11 @@ namespace VPContact
     cholmod_sparse *lower = lower_triangle(epetra, common);
     factor                = cholmod_l_analyze(lower, &common);
     if (factor != nullptr)
-      cholmod_l_factorize(lower, factor, &common);
+      {
+        // The supernodes' dense products, with deal.II's threads.
+        const BlasThreads threads(MultithreadInfo::n_threads());
+        cholmod_l_factorize(lower, factor, &common);
+      }
     const int  status   = common.status;
     const bool definite = factor == nullptr || status == CHOLMOD_OUT_OF_MEMORY
                           || factor->minor == factor->n;

@@ -1,11 +1,13 @@
 // The PETSc implementation of SpdSolver: the matrix copied once into a PETSc
 // AIJ matrix, PETSc's CG with GAMG or block Jacobi / ICC, or the Cholesky
 // factorization of MUMPS through PETSc.
+#include <vpcontact/blas_threads.h>
 #include <vpcontact/petsc_tools.h>
 #include <vpcontact/spd_solver.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <petscksp.h>
 #include <string>
@@ -58,7 +60,13 @@ namespace VPContact
             VPContactPetsc(KSPSetOperators(ksp, A, A));
             configure_cg(ksp);
           }
-        const PetscErrorCode error = KSPSetUp(ksp);
+        // A factorization's dense products get deal.II's threads in the
+        // BLAS; the solves keep one (see set_blas_threads()).
+        const PetscErrorCode error = [this]() {
+          const BlasThreads threads(is_direct() ? MultithreadInfo::n_threads() :
+                                                  1);
+          return KSPSetUp(ksp);
+        }();
         AssertThrow(
           error == 0,
           ExcMessage(
