@@ -19,6 +19,8 @@ def decision(now, then, run):
     earlier commit `then`, HEAD's whole step `run`."""
     if then is None or now is None:
         return "–", "not timed by both"
+    if not then:
+        return "–", "a phase the earlier commit does not have"
     if now <= then:
         return f"{then / now:.2f}" if now else "–", "HEAD no slower: keep"
     faster, share = now / max(then, 1e-12), (now - then) / run
