@@ -64,6 +64,7 @@ namespace VPContact
     K.vmult(step_rhs, old_damage);
     step_rhs.sadd(-1., 1., load);
     bounds.begin_step(K);
+    system.begin_step();
     const std::vector<BoundStatus> previous_sets = bounds.sets();
     if (!find_sets_fast(step_rhs))
       {
@@ -167,7 +168,7 @@ namespace VPContact
     // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +
     // bound_change))_F; the held rows of the right-hand side are zero. The
     // change of the previous solve is the start vector.
-    system.matrix().vmult(solve_rhs, bound_change);
+    system.vmult_on_support(solve_rhs, bound_change);
     solve_rhs.sadd(-1., 1., step_rhs);
     for (const auto i : held)
       {
@@ -187,7 +188,7 @@ namespace VPContact
 
     // The multipliers r = b - K zeta = (b - K zeta_{n-1}) - K change
     // (bounds not condensed; hanging nodes carry none) and the next sets.
-    system.matrix().vmult(residual_owned, change);
+    system.vmult_on_support(residual_owned, change);
     residual_owned.sadd(-1., 1., step_rhs);
     residual = residual_owned;
     return bounds.update(residual, damage, time.step_size());

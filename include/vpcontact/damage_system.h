@@ -6,7 +6,9 @@
 #define vpcontact_damage_system_h
 
 #include <vpcontact/damage_obstacle_snes.h>
+#include <vpcontact/damage_region_solver.h>
 #include <vpcontact/spd_solver.h>
+#include <vpcontact/support_product.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
@@ -131,6 +133,18 @@ namespace VPContact
     void
     initialize_preconditioner();
 
+    /// y = K x, at the cost of the entries of x that are not zero (see
+    /// SupportProduct): for the changes of a damage solve, which vanish
+    /// where the damage stays at a bound.
+    void
+    vmult_on_support(TrilinosWrappers::MPI::Vector       &y,
+                     const TrilinosWrappers::MPI::Vector &x);
+
+    /// A new time step: the region solver builds its region again from
+    /// the free set of the step's first solve.
+    void
+    begin_step();
+
     /**
      * Solve K_FF x_F = b_F on the free nodes, x = 0 on the nodes listed in
      * @p held (local positions, see local_position()), by CG masked on the
@@ -204,6 +218,13 @@ namespace VPContact
     LinearAlgebra                  package = LinearAlgebra::trilinos;
     TrilinosWrappers::SparseMatrix system_matrix;
     std::unique_ptr<SpdSolver>     solver;
+    /// The program's own solver on a region around the free nodes, for the
+    /// first two choices of Solver/Damage preconditioner.
+    bool                               use_region_solver = true;
+    DamageRegionSolver::Preconditioner region_kind
+      = DamageRegionSolver::Preconditioner::diagonal;
+    DamageRegionSolver region_solver;
+    SupportProduct     support_product;
     /// Solver/Damage obstacle solver = SNES VI, and its solver.
     bool                                use_snes_vi = false;
     std::unique_ptr<DamageObstacleSnes> obstacle_snes;

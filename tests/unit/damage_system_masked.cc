@@ -4,11 +4,12 @@
 // numbering, a vector x* is chosen that is zero on the held nodes (those with
 // x < 0.4) and smooth elsewhere, and b = (K x*) on the free nodes, 0 on the
 // held ones. The masked CG must return x* (K_FF x_F = b_F has the unique
-// solution x*_F), with the held entries exactly zero, for both
-// preconditioners (incomplete Cholesky and AMG) of both packages (Trilinos and
-// PETSc), from a zero start vector and from x* itself, for five held sets in
-// turn (x < 0.4, 0.6, 0.1, and y < 0.25, y > 0.51, which lie on part of the
-// ranks only) with the same preconditioner. The same on 2 and 3 ranks.
+// solution x*_F), with the held entries exactly zero, for every
+// preconditioner (the region solver's two, the libraries' incomplete Cholesky
+// and AMG) with both packages (Trilinos and PETSc), from a zero start vector
+// and from x* itself, for five held sets in turn (x < 0.4, 0.6, 0.1, and y <
+// 0.25, y > 0.51, which lie on part of the ranks only) with the same
+// preconditioner. The same on 2 and 3 ranks.
 #include <vpcontact/damage_system.h>
 #include <vpcontact/linear_solver.h>
 
@@ -82,7 +83,11 @@ main(int argc, char **argv)
   DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
 
   for (const std::string package : {"Trilinos", "PETSc"})
-    for (const std::string preconditioner : {"incomplete Cholesky", "AMG"})
+    for (const std::string preconditioner :
+         {"modified diagonal incomplete Cholesky",
+          "modified incomplete Cholesky",
+          "incomplete Cholesky",
+          "AMG"})
       {
         ParameterHandler prm;
         LinearSolver::declare_parameters(prm);
