@@ -14,15 +14,25 @@ SPEED_UP = 1.5  # the rule: at least 1.5 times faster in its own phase
 SHARE = 0.10    # and saving at least 10 % of the whole run
 
 
-def decision(now, then, run):
+def decision(now, then, run, run_then):
     """The rule applied to one phase: HEAD takes `now` ms per step, the
-    earlier commit `then`, HEAD's whole step `run`."""
+    earlier commit `then`, HEAD's whole step `run`, the earlier one's
+    `run_then`. Where HEAD is faster, whether HEAD's code would pass the
+    rule against the earlier code (so that a kernel of HEAD's own that
+    replaced a library call shows its measurement)."""
     if then is None or now is None:
         return "–", "not timed by both"
     if not then:
         return "–", "a phase the earlier commit does not have"
     if now <= then:
-        return f"{then / now:.2f}" if now else "–", "HEAD no slower: keep"
+        if not now:
+            return "–", "HEAD no slower: keep"
+        share = (then - now) / run_then
+        passes = then / now >= SPEED_UP and share >= SHARE
+        return f"{then / now:.2f}", (
+            "HEAD no slower: keep"
+            + (f" (HEAD's code passes the rule: saves {share:.0%} of the "
+               "earlier step)" if passes else ""))
     faster, share = now / max(then, 1e-12), (now - then) / run
     verdict = ("earlier code passes the rule: bring it back"
                if faster >= SPEED_UP and share >= SHARE else
@@ -55,12 +65,13 @@ def table(every):
             if s2 != size or k2[:4] != k[:4] or report.is_head(old):
                 continue
             run = number(r.get("per_step_ms")) or 1.
+            run_then = number(old.get("per_step_ms")) or 1.
             for phase, title in report.PHASE_TITLES:
                 now = number(r.get(phase + "_ms"))
                 then = number(old.get(phase + "_ms"))
                 if not now and not then:
                     continue
-                speed, verdict = decision(now, then, run)
+                speed, verdict = decision(now, then, run, run_then)
                 lines.append(
                     f"| {report.config(r)}, {k[3]} rank"
                     f"{'s' * (int(k[3]) > 1)} | {k2[4]} | {title} | "

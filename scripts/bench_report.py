@@ -440,8 +440,9 @@ def write_report(out, csv_path, rows):
         "direct path is `Solver/Linear solver = Cholesky` (CHOLMOD, one "
         "process; run with the Trilinos package) or "
         "`MUMPS`, the AMG path `CG with AMG` (ML or GAMG, the rigid motions "
-        "as near null space). The damage solves use incomplete Cholesky "
-        "on the free rows (Ifpack IC, PETSc ICC). 2 ranks are "
+        "as near null space). The damage solves use the default "
+        "`Solver/Damage preconditioner` (the program's region solver, "
+        "CG over the free nodes). 2 ranks are "
         "`mpirun -np 2`, one core each; 1 rank uses deal.II's threads on "
         "both cores.",
         "* Peer: `peer.py --solver lu` (MUMPS LU, factorized once) and "
