@@ -312,7 +312,7 @@ namespace VPContact
                               + "] (range at the nodes)",
                             "the damage must lie in [0, 1] (1 is sound).");
     system.scatter(damage_owned, solution_owned);
-    damage = damage_owned;
+    damage_exchange.copy(damage_owned, damage);
   }
 
 

@@ -3,6 +3,7 @@
 // whole), storing zeta_n, the damage statistics and the checkpointed state.
 #include <vpcontact/damage_problem.h>
 #include <vpcontact/finite_values.h>
+#include <vpcontact/ghost_exchange.h>
 #include <vpcontact/input_error.h>
 
 #include <algorithm>
@@ -25,20 +26,20 @@ namespace VPContact
     last_iterations = 0;
     change          = 0.;
     system.gather(solution_owned, old_damage);
-    damage = old_damage;
+    damage_exchange.copy(old_damage, damage);
     assemble_load(history);
     model.check_source_finite(all_finite(load, communicator), n, time.time(n));
     if (system.solves_obstacle_whole())
       {
         TimerOutput::Scope t(timer, "Damage solve");
-        damage_owned = old_damage;
+        copy_owned_values(old_damage, damage_owned);
         last_iterations
           = system.solve_obstacle(load,
                                   damage_owned,
                                   linear_solver.tolerance(),
                                   model.max_iterations(),
                                   linear_solver.iteration_limit());
-        damage = damage_owned;
+        damage_exchange.copy(damage_owned, damage);
         return;
       }
     solve_by_active_set(n);
@@ -113,7 +114,7 @@ namespace VPContact
     // sets of the previous step and already moves the nodes that this load
     // alone pushes off (or onto) a bound; without it the first solve would
     // only find them.
-    residual = step_rhs;
+    residual_exchange.copy(step_rhs, residual);
     bounds.update(residual, damage, time.step_size());
 
     // Then the front of the upper set is moved ahead by as many whole rings
@@ -182,15 +183,15 @@ namespace VPContact
                  linear_solver.iteration_limit());
     change += bound_change;
     system.distribute_hanging_nodes(change);
-    damage_owned = old_damage;
+    copy_owned_values(old_damage, damage_owned);
     damage_owned += change;
-    damage = damage_owned;
+    damage_exchange.copy(damage_owned, damage);
 
     // The multipliers r = b - K zeta = (b - K zeta_{n-1}) - K change
     // (bounds not condensed; hanging nodes carry none) and the next sets.
     system.vmult_on_support(residual_owned, change);
     residual_owned.sadd(-1., 1., step_rhs);
-    residual = residual_owned;
+    residual_exchange.copy(residual_owned, residual);
     return bounds.update(residual, damage, time.step_size());
   }
 
@@ -224,7 +225,7 @@ namespace VPContact
     // Hanging nodes take the average of their (clipped) parents again.
     system.distribute_hanging_nodes(damage_owned);
     last_clip = clip;
-    damage    = damage_owned;
+    damage_exchange.copy(damage_owned, damage);
     system.scatter(damage_owned, solution_owned);
   }
 

@@ -1,5 +1,6 @@
 // The damage problem's linear algebra on the damage degrees of freedom alone.
 #include <vpcontact/damage_system.h>
+#include <vpcontact/owned_constraints.h>
 #include <vpcontact/input_error.h>
 
 #include <deal.II/base/mpi.h>
@@ -336,7 +337,7 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector &owned_vector) const
   {
     if (has_hanging_nodes)
-      constraints.distribute(owned_vector);
+      distribute_constraints(constraints, owned_vector);
   }
 
 

@@ -7,6 +7,7 @@
 #include <vpcontact/damage_bounds.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/damage_system.h>
+#include <vpcontact/ghost_exchange.h>
 #include <vpcontact/linear_solver.h>
 #include <vpcontact/quadrature_history.h>
 #include <vpcontact/statistics.h>
@@ -178,6 +179,10 @@ namespace VPContact
     TrilinosWrappers::MPI::Vector residual_owned;
     TrilinosWrappers::MPI::Vector residual;
     TrilinosWrappers::MPI::Vector lumped_mass;
+    /// The copies into the ghosted damage and residual, with their imports
+    /// kept (see GhostExchange): several per damage solve.
+    GhostExchange damage_exchange;
+    GhostExchange residual_exchange;
     /// For each locally owned cell (by active cell index), per damage shape
     /// function: its vertex-rule mass int_K psi_a, and the position of its
     /// node in the local storage of the ghosted vector damage. Set once per
