@@ -6,6 +6,7 @@
 #include <deal.II/lac/solver_cg.h>
 
 #include <algorithm>
+#include <future>
 
 namespace VPContact
 {
@@ -178,15 +179,23 @@ namespace VPContact
 
 
 
-  unsigned int
-  LinearSolver::solve(TrilinosWrappers::MPI::Vector       &x,
-                      const TrilinosWrappers::MPI::Vector &b)
+  double
+  LinearSolver::checked_norm(const TrilinosWrappers::MPI::Vector &b)
   {
     AssertThrow(all_finite(b, b.get_mpi_communicator()),
                 ExcMessage("The right-hand side of the displacement system "
                            "is not finite (NaN or Inf). Check the load "
                            "expressions in 'Boundary conditions'."));
-    const double b_norm = b.l2_norm();
+    return b.l2_norm();
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve(TrilinosWrappers::MPI::Vector       &x,
+                      const TrilinosWrappers::MPI::Vector &b)
+  {
+    const double b_norm = checked_norm(b);
     if (b_norm == 0.)
       {
         x = 0.;
@@ -223,6 +232,44 @@ namespace VPContact
                        "direct on small meshes."));
       }
     return 0;
+  }
+
+
+
+  bool
+  LinearSolver::solves_in_background() const
+  {
+    return method == SpdMethod::cholesky && solver != nullptr
+           && !changed_since_initialize;
+  }
+
+
+
+  std::future<unsigned int>
+  LinearSolver::solve_in_background(TrilinosWrappers::MPI::Vector       &x,
+                                    const TrilinosWrappers::MPI::Vector &b)
+  {
+    Assert(solves_in_background(), ExcInternalError());
+    // What solve() does with a factorization, in the same order: the checks
+    // and the norm (reductions over the ranks) here, in the calling thread;
+    // the substitutions in the second thread, which touches nothing but the
+    // factors, x and b, and the count of the last solve, read again only
+    // after get(). Should the caller leave by an exception before get(),
+    // the future's destructor waits for the thread.
+    const double b_norm = checked_norm(b);
+    if (b_norm == 0.)
+      {
+        x = 0.;
+        std::promise<unsigned int> done;
+        done.set_value(0);
+        return done.get_future();
+      }
+    const double tolerance = relative_tolerance * b_norm;
+    return std::async(std::launch::async, [this, &x, &b, tolerance]() {
+      SolverControl control(max_iterations, tolerance);
+      iterations_before = solver->solve(x, b, control);
+      return iterations_before;
+    });
   }
 
 

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <future>
 #include <memory>
 #include <string>
 
@@ -60,6 +61,31 @@ namespace VPContact
           const TrilinosWrappers::MPI::Vector &b);
 
     /**
+     * Whether solve_in_background() may be called: the factors of
+     * Solver/Linear solver = Cholesky (one process) for the matrix as it
+     * was given to initialize(). After matrix_changed() a solve is CG on
+     * the changed matrix, which is left to solve().
+     */
+    bool
+    solves_in_background() const;
+
+    /**
+     * solve() with its substitutions in a second thread, so that the
+     * caller can work beside them: the future's get() returns the number of
+     * iterations (1, or 0 for b = 0) and rethrows what the solve threw.
+     * The checks of @p b (finite, its norm) run in the calling thread
+     * before it returns, since they may call MPI; the second thread only
+     * calls the factors' substitutions (CHOLMOD, no MPI). Until get()
+     * returns, @p x, @p b and the factors belong to the second thread: the
+     * caller must not touch the vectors nor call a function of this solver
+     * that is not const (the const ones, such as tolerance(), read only
+     * what the second thread does not write).
+     */
+    std::future<unsigned int>
+    solve_in_background(TrilinosWrappers::MPI::Vector       &x,
+                        const TrilinosWrappers::MPI::Vector &b);
+
+    /**
      * The matrix given to initialize() changed in place by a little (the
      * slip stiffness of a friction iteration). Later solves run deal.II's CG
      * on the changed matrix, preconditioned by the preconditioner or the
@@ -106,6 +132,10 @@ namespace VPContact
 
     /// AMG's near null space, kept for a rebuild after matrix_changed().
     NearNullSpace kept_null_space;
+
+    /// |b|, after checking that @p b is finite.
+    static double
+    checked_norm(const TrilinosWrappers::MPI::Vector &b);
 
     /// CG on the changed matrix with the old preconditioner; false (and
     /// @p x unchanged) where it does not converge within a few times the

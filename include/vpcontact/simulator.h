@@ -54,6 +54,9 @@ namespace VPContact
    *
    * The implementation is split by concern:
    * - simulator.cc: parameters, construction, the time loop, one step;
+   * - simulator_solve.cc: the displacement increment of a step (the
+   *   stick/slip active set around the linear solves, the first solve
+   *   beside the damage step), the solve floor;
    * - simulator_cycles.cc: the start of a refinement cycle, the next mesh,
    *   the snapshot that ConvergenceStudy compares with a reference;
    * - simulator_setup.cc: mesh, degrees of freedom, constraints, sparsity,
@@ -201,11 +204,29 @@ namespace VPContact
     compute_initial_state();
     void
     solve_step(const unsigned int n);
-    /// The displacement increment of the step at @p time.
+
+    // simulator_solve.cc
+    /**
+     * The displacement increment of the step at @p time. @p beside, if
+     * given, runs once, in the first active-set iteration after its
+     * right-hand side is assembled: while that solve's substitutions run
+     * in a second thread where the linear solver allows it
+     * (LinearSolver::solves_in_background()), else just before the solve.
+     * It must not touch the displacement system's vectors or solver, and
+     * must read nothing that the later iterations change.
+     */
     void
-    solve_increment(const double time, const bool with_viscoplastic_rate);
+    solve_increment(const double                 time,
+                    const bool                   with_viscoplastic_rate,
+                    const std::function<void()> &beside = {});
     void
     solve_displacement();
+    void
+    solve_displacement_beside(const std::function<void()> &beside);
+    void
+    copy_start_vector();
+    void
+    take_solved_increment();
     bool
     friction_sets_settled(const double time, const unsigned int iteration);
     void
