@@ -56,10 +56,11 @@ def arguments():
         help="the peer's peer.py (default ../shared/peer-dolfinx/peer.py)")
     p.add_argument("--no-peer", action="store_true", help="skip the peer")
     p.add_argument("--against", action="append", default=[],
-                   metavar="COMMIT", help="also build vpcontact at COMMIT "
-                   "(in a temporary git worktree under --workdir) and run "
-                   "each configuration with it right after HEAD's; the "
-                   "report compares their phases (repeatable)")
+                   metavar="COMMIT[:REGEX]", help="also build vpcontact "
+                   "at COMMIT (in a temporary git worktree under --workdir) "
+                   "and run each configuration with it right after HEAD's, "
+                   "or only those whose name matches REGEX (as --configs); "
+                   "the report compares their phases (repeatable)")
     p.add_argument("--configs", metavar="REGEX", help="only the runs whose "
                    "name matches (re.search), as in 'vpcontact Trilinos "
                    "Cholesky, 1 rank' or 'peer gamg, 2 ranks': "
@@ -367,7 +368,10 @@ def plan(a, programs):
                 ("direct", 2, "MUMPS"), ("AMG", 1, "CG with AMG"),
                 ("AMG", 2, "CG with AMG")):
             runs += [(p, "vpcontact", algebra, solver, path, ranks,
-                      missing(p, algebra, solver)) for p in programs]
+                      missing(p, algebra, solver)) for p in programs
+                     if not getattr(p, "configs", None) or re.search(
+                         p.configs, config_name("vpcontact", algebra, solver,
+                                                ranks))]
     peer_skip = ("--no-peer" if a.no_peer else f"no {a.peer}"
                  if not os.path.exists(a.peer) else None)
     if not peer_skip and subprocess.run([PYTHON, "-c", "import dolfinx"],
@@ -395,8 +399,10 @@ def plan(a, programs):
 def earlier_programs(a, worktrees, head_commit):
     """A build of each --against commit with the entries it offers."""
     programs = []
-    for commit in dict.fromkeys(a.against):  # each once, in the given order
+    for entry in dict.fromkeys(a.against):  # each once, in the given order
+        commit, _, configs = entry.partition(":")
         program = worktrees.add(commit, os.path.join(a.workdir, "logs"))
+        program.configs = configs or None
         if program.commit == head_commit:
             sys.exit(f"error: --against {commit} is HEAD itself "
                      f"({head_commit}); give an earlier commit")

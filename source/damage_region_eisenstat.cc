@@ -43,6 +43,26 @@ namespace VPContact
         sweep_inverse[k]  = 1. / sweep_diagonal[k];
       }
 
+    collect_cut_coupling();
+    for (auto *v : {&masked_diagonal,
+                    &masked_inverse,
+                    &masked_shift,
+                    &off_rank,
+                    &hat_residual,
+                    &hat_direction,
+                    &hat_update,
+                    &sweep_t,
+                    &sweep_s,
+                    &residual_change,
+                    &true_residual})
+      v->assign(n, 0.);
+  }
+
+
+
+  void
+  DamageRegionSolver::collect_cut_coupling()
+  {
     // The entries of the region's rows in columns of other ranks: P is
     // built from this rank's rows alone (block Jacobi between ranks, as
     // for (M)IC(0)), so K = C + C^T + (K_kk - 2 D) + K_off, and the
@@ -57,7 +77,7 @@ namespace VPContact
     exported.clear();
     if (!serial_layout)
       {
-        for (unsigned int k = 0; k < n; ++k)
+        for (unsigned int k = 0; k < region.size(); ++k)
           {
             const unsigned int i = region[k];
             for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
@@ -76,19 +96,6 @@ namespace VPContact
         for (int e = 0; e < importer->NumExportIDs(); ++e)
           exported.emplace_back(export_lids[e], region_index[export_lids[e]]);
       }
-
-    for (auto *v : {&masked_diagonal,
-                    &masked_inverse,
-                    &masked_shift,
-                    &off_rank,
-                    &hat_residual,
-                    &hat_direction,
-                    &hat_update,
-                    &sweep_t,
-                    &sweep_s,
-                    &residual_change,
-                    &true_residual})
-      v->assign(n, 0.);
   }
 
 
@@ -244,22 +251,8 @@ namespace VPContact
     // sweep's pass over L (forward_sweep()). The unknown is the change
     // from the start vector, x = x_0 + C^{-T} x^.
     mask_diagonal();
-    const unsigned int n = region.size();
-    const double      *b = b_vector.begin();
-    double            *x = x_vector.begin();
-    double            *p = direction.begin();
-
-    // r = b - K x_0 on F (region indices), with the product of the other
-    // preconditioners.
-    const double  b_norm2 = start_product(b, x);
-    double *const r       = true_residual.data();
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const unsigned int i = region[k];
-        r[k]                 = (is_free[i] ? b[i] - product[i] : 0.);
-      }
-    for (const unsigned int i : free_nodes)
-      p[i] = product[i] = 0.;
+    double      *x       = x_vector.begin();
+    const double b_norm2 = eisenstat_start(b_vector.begin(), x);
     if (b_norm2 == 0.)
       {
         for (const unsigned int i : free_nodes)
@@ -270,20 +263,13 @@ namespace VPContact
 
     double *const rh = hat_residual.data();
     double *const ph = hat_direction.data();
-    double *const xh = hat_update.data();
     double *const t  = sweep_t.data();
     double *const s  = sweep_s.data();
     double *const w  = residual_change.data();
-    forward_sweep(r, nullptr, rh, nullptr);
+    forward_sweep(true_residual.data(), nullptr, rh, nullptr);
     std::fill(hat_direction.begin(), hat_direction.end(), 0.);
     std::fill(hat_update.begin(), hat_update.end(), 0.);
-    double rz_local = 0, rr_local = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        rz_local += masked_diagonal[k] * rh[k] * rh[k];
-        rr_local += r[k] * r[k];
-      }
-    auto [rz_next, rr] = global_sums(rz_local, rr_local);
+    auto [rz_next, rr] = eisenstat_update(0.);
 
     // NaN compares false: a non-finite residual ends in NoConvergence, as
     // too many iterations do.
@@ -301,33 +287,76 @@ namespace VPContact
         backward_sweep(rh, ph, beta, t);
         if (!serial_layout)
           add_off_rank_coupling(sweep_t);
-        const double alpha = rz / global_sum(forward_sweep(ph, t, s, w));
-        rz_local = rr_local = 0;
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            xh[k] += alpha * ph[k];
-            rh[k] -= alpha * (t[k] + s[k]);
-            r[k] -= alpha * w[k];
-            rz_local += masked_diagonal[k] * rh[k] * rh[k];
-            rr_local += r[k] * r[k];
-          }
-        std::tie(rz_next, rr) = global_sums(rz_local, rr_local);
+        const double alpha    = rz / global_sum(forward_sweep(ph, t, s, w));
+        std::tie(rz_next, rr) = eisenstat_update(alpha);
         ++iteration;
       }
+    eisenstat_finish(x);
+    return iteration;
+  }
 
+
+
+  double
+  DamageRegionSolver::eisenstat_start(const double *b, double *x)
+  {
+    // r = b - K x_0 on F (region indices), with the product of the other
+    // preconditioners; returns |b|^2 over F on every rank.
+    const double b_norm2 = start_product(b, x);
+    double      *p       = direction.begin();
+    for (unsigned int k = 0; k < region.size(); ++k)
+      {
+        const unsigned int i = region[k];
+        true_residual[k]     = (is_free[i] ? b[i] - product[i] : 0.);
+      }
+    for (const unsigned int i : free_nodes)
+      p[i] = product[i] = 0.;
+    return b_norm2;
+  }
+
+
+
+  std::pair<double, double>
+  DamageRegionSolver::eisenstat_update(const double alpha)
+  {
+    // x^ += alpha p^, r^ -= alpha K^ p^ and r -= alpha C K^ p^, with the
+    // sums r^ D r^ and r . r taken in the same pass (alpha = 0: the sums
+    // alone, at the start).
+    const unsigned int n  = region.size();
+    double *const      rh = hat_residual.data();
+    double *const      r  = true_residual.data();
+    double             rz = 0, rr = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        hat_update[k] += alpha * hat_direction[k];
+        rh[k] -= alpha * (sweep_t[k] + sweep_s[k]);
+        r[k] -= alpha * residual_change[k];
+        rz += masked_diagonal[k] * rh[k] * rh[k];
+        rr += r[k] * r[k];
+      }
+    return global_sums(rz, rr);
+  }
+
+
+
+  void
+  DamageRegionSolver::eisenstat_finish(double *x)
+  {
     // x = x_0 + C^{-T} x^ (the backward sweep with beta = 1 and D rh = 0
     // would do the same; spelled out for clarity).
+    const unsigned int n = region.size();
+    double *const      t = sweep_t.data();
     for (unsigned int k = n; k-- > 0;)
       {
-        double sum = xh[k];
+        double sum = hat_update[k];
         for (unsigned int c = upper_start[k]; c < upper_start[k + 1]; ++c)
           sum -= upper_value[c] * t[upper_column[c]];
         t[k] = sum * masked_inverse[k];
       }
     for (unsigned int k = 0; k < n; ++k)
       x[region[k]] += t[k];
+    double *p = direction.begin();
     for (const auto &entry : exported)
       p[entry.first] = 0.;
-    return iteration;
   }
 } // namespace VPContact

@@ -52,6 +52,25 @@ namespace VPContact
 
     AssertThrow(static_cast<unsigned int>(K.NumMyRows()) == n_owned,
                 ExcInternalError());
+    copy_owned_rows(K, ghosted_of_column);
+
+    is_free.assign(n_owned, false);
+    free_nodes.clear();
+    residual.assign(n_owned, 0.);
+    preconditioned.assign(n_owned, 0.);
+    product.assign(n_owned, 0.);
+    direction    = 0.;
+    region_valid = false;
+    builds       = 0;
+  }
+
+
+
+  void
+  DamageRegionSolver::copy_owned_rows(
+    const Epetra_CrsMatrix          &K,
+    const std::vector<unsigned int> &ghosted_of_column)
+  {
     row_start.assign(1, 0);
     column.clear();
     value.clear();
@@ -68,15 +87,6 @@ namespace VPContact
           }
         row_start.push_back(column.size());
       }
-
-    is_free.assign(n_owned, false);
-    free_nodes.clear();
-    residual.assign(n_owned, 0.);
-    preconditioned.assign(n_owned, 0.);
-    product.assign(n_owned, 0.);
-    direction    = 0.;
-    region_valid = false;
-    builds       = 0;
   }
 
 
@@ -184,6 +194,37 @@ namespace VPContact
   void
   DamageRegionSolver::factorize_region()
   {
+    const unsigned int n = region.size();
+    collect_lower_triangle();
+    const std::vector<unsigned int> entry_in_rows = transpose_lower_triangle();
+
+    if (kind == Preconditioner::diagonal)
+      {
+        // The sweeps use K's own entries: L^T by rows with K's values.
+        upper_value.resize(factor_value.size());
+        for (unsigned int c = 0; c < entry_in_rows.size(); ++c)
+          upper_value[c] = factor_value[entry_in_rows[c]];
+        prepare_diagonal_preconditioner();
+        return;
+      }
+    factorize_by_columns(entry_in_rows);
+
+    // Multiplications instead of divisions in the two sweeps, which run in
+    // every CG iteration.
+    inverse_diagonal.resize(n);
+    for (unsigned int k = 0; k < n; ++k)
+      inverse_diagonal[k] = 1. / factor_diagonal[k];
+    upper_value.resize(factor_value.size());
+    for (unsigned int c = 0; c < entry_in_rows.size(); ++c)
+      upper_value[c] = factor_value[entry_in_rows[c]];
+    region_work.assign(n, 0.);
+  }
+
+
+
+  void
+  DamageRegionSolver::collect_lower_triangle()
+  {
     // The lower triangle of K_RR in region indices, each row sorted; the
     // factorization overwrites it with L.
     const unsigned int n = region.size();
@@ -215,7 +256,14 @@ namespace VPContact
           }
         factor_start.push_back(factor_column.size());
       }
+  }
 
+
+
+  std::vector<unsigned int>
+  DamageRegionSolver::transpose_lower_triangle()
+  {
+    const unsigned int n = region.size();
     // L^T by rows (the columns of L), with the position of each of its
     // entries in the rows of L. The factorization runs column by column
     // over it, and the backward sweep of the preconditioner gathers from
@@ -237,27 +285,7 @@ namespace VPContact
           upper_column[next[j]]    = k;
           entry_in_rows[next[j]++] = e;
         }
-
-    if (kind == Preconditioner::diagonal)
-      {
-        // The sweeps use K's own entries: L^T by rows with K's values.
-        upper_value.resize(factor_value.size());
-        for (unsigned int c = 0; c < entry_in_rows.size(); ++c)
-          upper_value[c] = factor_value[entry_in_rows[c]];
-        prepare_diagonal_preconditioner();
-        return;
-      }
-    factorize_by_columns(entry_in_rows);
-
-    // Multiplications instead of divisions in the two sweeps, which run in
-    // every CG iteration.
-    inverse_diagonal.resize(n);
-    for (unsigned int k = 0; k < n; ++k)
-      inverse_diagonal[k] = 1. / factor_diagonal[k];
-    upper_value.resize(factor_value.size());
-    for (unsigned int c = 0; c < entry_in_rows.size(); ++c)
-      upper_value[c] = factor_value[entry_in_rows[c]];
-    region_work.assign(n, 0.);
+    return entry_in_rows;
   }
 
 

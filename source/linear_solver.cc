@@ -37,8 +37,8 @@ namespace VPContact
         "MUMPS with PETSc), for small meshes. 'MUMPS': the distributed "
         "multifrontal factorization, for medium meshes under mpirun. "
         "'Cholesky': the supernodal factorization of SuiteSparse CHOLMOD on "
-        "one process, with substitutions of the program's own, the fastest "
-        "choice for a serial 2D run. A "
+        "one process (CHOLMOD's own substitutions, run beside the damage "
+        "step in a second thread), the fastest choice for a serial 2D run. A "
         "factorization is computed once per matrix and reused by every "
         "step, and again whenever the stick set changes.");
       prm.declare_entry("Relative tolerance",

@@ -226,7 +226,7 @@ namespace VPContact
                               locally_owned_dofs,
                               locally_relevant_dofs,
                               solution_owned);
-        solution = solution_owned;
+        ghosts.copy(solution_owned, solution);
       }
     // A resumed run takes the state of its checkpoint's step and continues
     // after it (simulator_checkpoint.cc).
@@ -298,7 +298,7 @@ namespace VPContact
   ErrorEstimate
   Simulator<dim>::estimate_error(const unsigned int n)
   {
-    if (!error_estimator.is_active())
+    if (!error_estimator.estimates_step(n, time_discretization.n_steps()))
       return {std::numeric_limits<double>::quiet_NaN(),
               std::numeric_limits<double>::quiet_NaN()};
     TimerOutput::Scope t(computing_timer, "Error estimate");
@@ -374,7 +374,7 @@ namespace VPContact
     if (damage_problem)
       {
         damage_problem->store(n, solution_owned);
-        solution = solution_owned;
+        ghosts.copy(solution_owned, solution);
       }
   }
 

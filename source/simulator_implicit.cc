@@ -220,7 +220,7 @@ namespace VPContact
           break;
       }
     solution_owned += increment_owned;
-    solution = solution_owned;
+    ghosts.copy(solution_owned, solution);
   }
 
 
@@ -252,7 +252,7 @@ namespace VPContact
     constraints.distribute(update);
     const double update_norm = update.l2_norm();
     increment_owned += update;
-    increment = increment_owned;
+    ghosts.copy(increment_owned, increment);
     if (iteration == 1 && boundary_conditions.has_prescribed_displacement())
       {
         TrilinosWrappers::MPI::Vector total(solution_owned);

@@ -355,7 +355,7 @@ namespace VPContact
       compute_cell_stresses(von_mises, components);
 
     std::string line = add_step_statistics(n, step_wall_time, measures);
-    if (error_estimator.is_active())
+    if (error_estimator.estimates_step(n, time_discretization.n_steps()))
       {
         statistics.add_value("estimate_space", estimate.space);
         statistics.add_value("estimate_time", estimate.time);

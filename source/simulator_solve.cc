@@ -3,6 +3,7 @@
 // (beside the damage step where the factors allow), and the solve floor.
 #include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/timer.h>
@@ -77,7 +78,7 @@ namespace VPContact
     if (with_viscoplastic_rate)
       increment_predictor.record(increment_owned);
     solution_owned += increment_owned;
-    solution = solution_owned;
+    ghosts.copy(solution_owned, solution);
   }
 
 
@@ -152,8 +153,8 @@ namespace VPContact
     std::copy(displacement.increment.begin(),
               displacement.increment.end(),
               increment_owned.begin());
-    constraints.distribute(increment_owned);
-    increment = increment_owned;
+    distribute_constraints(constraints, increment_owned);
+    ghosts.copy(increment_owned, increment);
   }
 
 

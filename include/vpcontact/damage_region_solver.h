@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_Import.h>
 #include <memory>
 #include <vector>
@@ -119,6 +120,21 @@ namespace VPContact
     void
     order_by_levels();
 
+    /// K's owned rows as CSR with ghosted column positions.
+    void
+    copy_owned_rows(const Epetra_CrsMatrix          &K,
+                    const std::vector<unsigned int> &ghosted_of_column);
+
+    /// The strictly lower triangle of K_RR by rows (region indices,
+    /// sorted) and its diagonal.
+    void
+    collect_lower_triangle();
+
+    /// L^T by rows (upper_start, upper_column); returns the position in
+    /// factor_value of each of its entries.
+    std::vector<unsigned int>
+    transpose_lower_triangle();
+
     /// The lower triangle of K_RR, factorized; L^T for the backward sweep.
     void
     factorize_region();
@@ -139,6 +155,25 @@ namespace VPContact
                     TrilinosWrappers::MPI::Vector       &x,
                     const double                         tolerance,
                     const unsigned int                   max_iterations);
+
+    /// The entries of the region's rows in other ranks' columns, and the
+    /// owned entries the import sends (see prepare_diagonal_preconditioner()).
+    void
+    collect_cut_coupling();
+
+    /// r = b - K x on F in region indices, for solve_eisenstat(); returns
+    /// |b|^2 over F, summed over the ranks.
+    double
+    eisenstat_start(const double *b, double *x);
+
+    /// One update of solve_eisenstat()'s vectors with step @p alpha, and
+    /// the sums r^ D r^ and r . r over the ranks.
+    std::pair<double, double>
+    eisenstat_update(const double alpha);
+
+    /// x += C^{-T} x^ at the end of solve_eisenstat().
+    void
+    eisenstat_finish(double *x);
 
     /// The diagonals of the sweeps for the current free set (zero off it).
     void

@@ -84,6 +84,11 @@ namespace VPContact
     bool
     is_active() const;
 
+    /// Whether step @p n of a run of @p n_steps steps is estimated (see
+    /// the entry "Every steps").
+    bool
+    estimates_step(const unsigned int n, const unsigned int n_steps) const;
+
     /**
      * On a new mesh: the recovery space (scalar Q1 on @p triangulation),
      * its constraints and lumped mass, for the locally owned cells
@@ -178,7 +183,8 @@ namespace VPContact
     ErrorEstimate
     sum_norms(const double k, const double youngs_modulus);
 
-    bool active = true;
+    bool         active      = true;
+    unsigned int every_steps = 1;
 
     const parallel::TriangulationBase<dim> *triangulation = nullptr;
     const std::vector<cell_iterator>       *cells         = nullptr;

@@ -15,6 +15,7 @@
 #include <vpcontact/error_estimator.h>
 #include <vpcontact/friction_problem.h>
 #include <vpcontact/geometry.h>
+#include <vpcontact/ghost_exchange.h>
 #include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
 #include <vpcontact/monitor_points.h>
@@ -450,6 +451,9 @@ namespace VPContact
     /// du = u_n - u_{n-1}: owned part (the solver's vector), ghosted copy.
     TrilinosWrappers::MPI::Vector increment_owned;
     TrilinosWrappers::MPI::Vector increment;
+    /// The copies of both into their ghosted vectors, with the import kept
+    /// (deal.II 9.4's assignment builds one per call; see GhostExchange).
+    GhostExchange ghosts;
     /// A Newton correction of the implicit step (owned, displacement
     /// block).
     TrilinosWrappers::MPI::Vector newton_update;
