@@ -1,7 +1,7 @@
 // The damage problem's linear algebra on the damage degrees of freedom alone.
 #include <vpcontact/damage_system.h>
-#include <vpcontact/owned_constraints.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/owned_constraints.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
