@@ -515,11 +515,12 @@ def write_report(out, csv_path, rows):
         "figures/bench.csv beside it), `--quick` (16² and 32², 10 steps, "
         "into /tmp/vpcontact_bench), `--configs REGEX` (only the runs "
         "whose name matches, as in `'Trilinos Cholesky, 1 rank'` or "
-        "`'AMG, 2 ranks'`), `--against COMMIT` (repeatable: builds "
-        "vpcontact at COMMIT in a temporary git worktree under the work "
-        "folder, runs each configuration it offers right after HEAD's and "
-        "fills the section *Phases against earlier commits*; the worktree "
-        "is removed at the end). `scripts/bench_report.py CSV PAGE` "
+        "`'AMG, 2 ranks'`), `--against COMMIT[:REGEX]` (repeatable: "
+        "builds vpcontact at COMMIT in a temporary git worktree under the "
+        "work folder, runs each configuration it offers, or those whose "
+        "name matches REGEX, right after HEAD's and fills the section "
+        "*Phases against earlier commits*; the worktree is removed at the "
+        "end). `scripts/bench_report.py CSV PAGE` "
         "rewrites the page from the CSV alone. Run it with nothing else "
         "busy on the machine."]
     with open(out, "w") as f:
