@@ -147,8 +147,9 @@ namespace VPContact
 
     /**
      * Solve K_FF x_F = b_F on the free nodes, x = 0 on the nodes listed in
-     * @p held (local positions, see local_position()), by CG masked on the
-     * held nodes (see SpdSolver). @p b and @p x must be zero on the held
+     * @p held (local positions, see local_position()), by CG over the free
+     * nodes (DamageRegionSolver) or an SpdSolver that holds the others, as
+     * Solver/Damage preconditioner says. @p b and @p x must be zero on the held
      * nodes (@p x is the start vector). Stops at a residual of @p tolerance
      * times |b|; throws a message naming the Solver parameters otherwise.
      * Returns the number of CG iterations.
