@@ -34,10 +34,11 @@ namespace VPContact
          n_q_points](const typename Triangulation<dim>::cell_iterator &cell,
                      const typename Triangulation<dim>::CellStatus) {
           const auto points = history.get_data(cell);
+          const auto rates  = history.initial_rates(cell);
           AssertDimension(points.size(), n_q_points);
           std::vector<double> values(n_q_points * n_values);
           for (unsigned int q = 0; q < n_q_points; ++q)
-            points[q].write_to(&values[q * n_values]);
+            points[q].write_to(&values[q * n_values], rates[q]);
           std::vector<char> bytes(values.size() * sizeof(double));
           std::memcpy(bytes.data(), values.data(), bytes.size());
           return bytes;
@@ -93,9 +94,10 @@ namespace VPContact
           std::vector<double> values(n_q_points * n_values);
           std::memcpy(values.data(), &*bytes.begin(), bytes.size());
           const auto points = history.get_data(cell);
+          const auto rates  = history.initial_rates(cell);
           AssertDimension(points.size(), n_q_points);
           for (unsigned int q = 0; q < n_q_points; ++q)
-            points[q].read_from(&values[q * n_values]);
+            points[q].read_from(&values[q * n_values], rates[q]);
         });
     }
 

@@ -157,6 +157,7 @@ namespace VPContact
     // nothing recovered (at n = 0, G_0 is stored instead).
     constexpr unsigned int n_c    = n_fields<dim, damage>;
     const auto             points = history->get_data((*cells)[i]);
+    const auto             rates  = history->initial_rates((*cells)[i]);
     const auto             JxW    = history->JxW((*cells)[i]);
     std::array<SymmetricTensor<2, dim>, max_points> strain;
     std::array<Tensor<1, dim>, max_points>          gradient;
@@ -184,8 +185,8 @@ namespace VPContact
           }
         const auto rate = law.rate(points[q].stress, strain[q], zeta[q]);
         if (initial)
-          points[q].initial_rate = rate;
-        const auto change = rate - points[q].initial_rate;
+          rates[q] = rate;
+        const auto change = rate - rates[q];
         time += scalar_product(change, change) * JxW[q];
       }
     return time;

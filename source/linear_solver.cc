@@ -247,7 +247,8 @@ namespace VPContact
 
   std::future<unsigned int>
   LinearSolver::solve_in_background(TrilinosWrappers::MPI::Vector       &x,
-                                    const TrilinosWrappers::MPI::Vector &b)
+                                    const TrilinosWrappers::MPI::Vector &b,
+                                    const std::function<void()>         &then)
   {
     Assert(solves_in_background(), ExcInternalError());
     // What solve() does with a factorization, in the same order: the checks
@@ -260,14 +261,18 @@ namespace VPContact
     if (b_norm == 0.)
       {
         x = 0.;
-        std::promise<unsigned int> done;
-        done.set_value(0);
-        return done.get_future();
+        return std::async(std::launch::async, [then]() {
+          if (then)
+            then();
+          return 0u;
+        });
       }
     const double tolerance = relative_tolerance * b_norm;
-    return std::async(std::launch::async, [this, &x, &b, tolerance]() {
+    return std::async(std::launch::async, [this, &x, &b, tolerance, then]() {
       SolverControl control(max_iterations, tolerance);
       iterations_before = solver->solve(x, b, control);
+      if (then)
+        then();
       return iterations_before;
     });
   }

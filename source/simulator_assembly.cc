@@ -3,8 +3,8 @@
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/multithread_info.h>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -162,7 +162,8 @@ namespace VPContact
   template <int dim>
   void
   Simulator<dim>::assemble_rhs(const double time,
-                               const bool   with_viscoplastic_rate)
+                               const bool   with_viscoplastic_rate,
+                               const bool   predictor_stored)
   {
     TimerOutput::Scope t(computing_timer, "Assemble right-hand side");
 
@@ -179,42 +180,147 @@ namespace VPContact
     const double *const solution_entries
       = cell_kinematics.local_entries(solution);
 
-    // The cells in the threads of WorkStream, each into its own CellRhs;
-    // their sums into displacement.rhs one at a time, in the order of the
-    // cells, so that every entry is the same sum with any number of
-    // threads. The sums are the serial part of the pass, kept short by
-    // add_to_rhs(); a chunk of 64 cells per item keeps the pipeline's own
-    // cost per cell small.
+    // The plain cells (no constrained entry, all owned) in the threads
+    // deal.II has, color by color (see ConflictFreeChunks): each adds its
+    // vector to the owned entries by position, and every entry is the same
+    // sum with any number of threads. Then, in this thread, the other
+    // cells through the constraints.
     const IndexSet &owned = displacement.owned;
     AssertThrow(owned.is_contiguous()
                   && displacement.rhs.trilinos_vector().Map().LinearMap(),
                 ExcInternalError());
     const types::global_dof_index first_owned
       = (owned.n_elements() > 0 ? *owned.begin() : 0);
+    if (rhs_chunks.outdated(owned_cells.size(), constraints))
+      rhs_chunks.reinit(
+        owned_cells.size(),
+        [this](const std::size_t i, auto &indices) {
+          get_displacement_dof_indices(owned_cells[i], indices);
+        },
+        first_owned,
+        owned.n_elements(),
+        constraints,
+        std::max<std::size_t>(64,
+                              owned_cells.size()
+                                / (32 * MultithreadInfo::n_threads())));
     displacement.rhs = 0.;
-    WorkStream::run(
-      owned_cells.begin(),
-      owned_cells.end(),
-      [&](const auto &cell, AssemblyScratch &scratch, CellRhs &copy) {
-        compute_cell_rhs(*cell,
-                         time - k,
-                         evaluate_rate,
-                         solution_entries,
-                         scratch,
-                         copy);
-        add_cell_loads_and_lifts(*cell, body_force, scratch, copy);
-      },
-      [&](const CellRhs &copy) {
-        add_to_rhs(copy, constraints, first_owned, displacement.rhs);
-      },
-      AssemblyScratch(mapping,
-                      fe,
-                      quadrature,
-                      discretization.face_quadrature()),
-      CellRhs(displacement.shape_functions.size()),
-      2 * MultithreadInfo::n_threads(),
-      64);
+    for (unsigned int color = 0; color < rhs_chunks.colors().size(); ++color)
+      add_plain_cells(color,
+                      time - k,
+                      evaluate_rate,
+                      predictor_stored,
+                      body_force,
+                      solution_entries);
+    add_other_cells(time - k,
+                    evaluate_rate,
+                    predictor_stored,
+                    body_force,
+                    solution_entries);
     displacement.rhs.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_plain_cells(const unsigned int  color,
+                                  const double        previous_time,
+                                  const bool          evaluate_rate,
+                                  const bool          predictor_stored,
+                                  const bool          body_force,
+                                  const double *const solution_entries)
+  {
+    // The chunks of one color add to no common entry: they run in any
+    // threads at once. A plain cell has no constraint, so only its loads
+    // need its FEValues (a body force, or a traction face).
+    const std::vector<unsigned int> &chunks  = rhs_chunks.colors()[color];
+    double *const                    entries = displacement.rhs.begin();
+    const auto                      &shape   = displacement.shape_functions;
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      chunks.size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        AssemblyScratch scratch(mapping,
+                                fe,
+                                quadrature,
+                                discretization.face_quadrature());
+        for (std::size_t c = begin; c < end; ++c)
+          for (const std::size_t i : rhs_chunks.plain_cells(chunks[c]))
+            {
+              const auto &cell = owned_cells[i];
+              compute_cell_rhs(cell,
+                               previous_time,
+                               evaluate_rate,
+                               predictor_stored,
+                               solution_entries,
+                               scratch);
+              if (body_force)
+                scratch.fe_values.reinit(cell);
+              if (body_force || cell->at_boundary())
+                add_cell_loads(cell,
+                               scratch.fe_values,
+                               scratch.fe_face_values,
+                               scratch.cell_vector);
+              const unsigned int *const position = rhs_chunks.positions(i);
+              for (unsigned int a = 0; a < shape.size(); ++a)
+                entries[position[a]] += scratch.cell_vector(shape[a]);
+            }
+      },
+      1);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_other_cells(const double        previous_time,
+                                  const bool          evaluate_rate,
+                                  const bool          predictor_stored,
+                                  const bool          body_force,
+                                  const double *const solution_entries)
+  {
+    // The cells with a constrained or a ghost entry, one after the other:
+    // their vectors go through the constraints.
+    const IndexSet               &owned = displacement.owned;
+    const types::global_dof_index first_owned
+      = (owned.n_elements() > 0 ? *owned.begin() : 0);
+    AssemblyScratch scratch(mapping,
+                            fe,
+                            quadrature,
+                            discretization.face_quadrature());
+    CellRhs         copy(displacement.shape_functions.size());
+    for (const std::size_t i : rhs_chunks.other_cells())
+      {
+        compute_cell_rhs(owned_cells[i],
+                         previous_time,
+                         evaluate_rate,
+                         predictor_stored,
+                         solution_entries,
+                         scratch);
+        get_displacement_dof_indices(owned_cells[i], copy.dof_indices);
+        add_cell_loads_and_lifts(owned_cells[i], body_force, scratch, copy);
+        add_to_rhs(copy, constraints, first_owned, displacement.rhs);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::subtract_stored_predictor_work(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    AssemblyScratch                                      &scratch) const
+  {
+    // -(sigma_{n-1} + k G_{n-1}, eps(phi_i)) from the predictor a pass of
+    // this step stored.
+    const auto history = stress_history.get_data(cell);
+    const auto JxW     = stress_history.JxW(cell);
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+      scratch.weighted_predictor[q] = history[q].predictor * JxW[q];
+    cell_kinematics.subtract_stress_work(cell,
+                                         make_array_view(std::as_const(
+                                           scratch.weighted_predictor)),
+                                         scratch.cell_vector);
   }
 
 
@@ -225,17 +331,25 @@ namespace VPContact
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const double                                          previous_time,
     const bool                                            evaluate_rate,
+    const bool                                            predictor_stored,
     const double *const                                   solution_entries,
-    AssemblyScratch                                      &scratch,
-    CellRhs                                              &copy)
+    AssemblyScratch                                      &scratch)
   {
     // The strains, the damage and the work of the predictor come from
     // CellKinematics; an FEValues is reinitialized only on the cells that
     // carry a load or an inhomogeneous constraint, in add_cell_rhs(): about
     // half the time of an FEValues on every cell, the same printed results.
-    const bool   with_damage = damage_model.is_active();
+    // A stored predictor is the same number a new pass would give (its
+    // data, of step n-1, do not change within the step), and the stress at
+    // the points may already be that of step n (see update_stress_ahead()).
+    const bool   with_damage = damage_model.is_active() && !predictor_stored;
     const double k           = time_discretization.step_size();
     scratch.cell_vector.reinit(fe.n_dofs_per_cell());
+    if (predictor_stored)
+      {
+        subtract_stored_predictor_work(cell, scratch);
+        return;
+      }
     if (evaluate_rate || with_damage)
       cell_kinematics.strains(cell,
                               solution_entries,
@@ -274,7 +388,6 @@ namespace VPContact
                                          make_array_view(std::as_const(
                                            scratch.weighted_predictor)),
                                          scratch.cell_vector);
-    get_displacement_dof_indices(cell, copy.dof_indices);
   }
 
 

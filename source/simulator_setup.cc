@@ -268,6 +268,7 @@ namespace VPContact
         }
     cell_kinematics.reinit(dof_handler, quadrature, solution);
     owned_cells.clear();
+    rhs_chunks.clear();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         owned_cells.push_back(cell);

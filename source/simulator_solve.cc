@@ -59,7 +59,7 @@ namespace VPContact
       increment_predictor.predict(increment_owned);
     for (unsigned int iteration = 1;; ++iteration)
       {
-        assemble_rhs(time, with_viscoplastic_rate);
+        assemble_rhs(time, with_viscoplastic_rate, iteration > 1);
         if (friction_problem)
           friction_problem->add_slip_forces(constraints, displacement.rhs);
         if (iteration == 1 && beside)
@@ -91,6 +91,7 @@ namespace VPContact
       initialize_linear_solver();
     TimerOutput::Scope t(computing_timer, "Solve");
     copy_start_vector();
+    stress_ahead.restart();
     last_linear_iterations
       += displacement.solver.solve(displacement.increment, displacement.rhs);
     take_solved_increment();
@@ -118,14 +119,23 @@ namespace VPContact
         solve_displacement();
         return;
       }
+    // After the substitutions the second thread also starts on the stress
+    // update (see update_stress_ahead()) while the damage step still runs
+    // here: once the damage has spread, the damage step is the longer of
+    // the two. CellKinematics checks the increment's layout here (the check
+    // may call MPI).
     copy_start_vector();
-    std::future<unsigned int> solving
-      = displacement.solver.solve_in_background(displacement.increment,
-                                                displacement.rhs);
+    const double *const increment_entries
+      = cell_kinematics.local_entries(increment);
+    stress_ahead.restart();
+    std::future<unsigned int> solving = displacement.solver.solve_in_background(
+      displacement.increment,
+      displacement.rhs,
+      [this, increment_entries]() { update_stress_ahead(increment_entries); });
     beside();
+    stress_ahead.arrive();
     TimerOutput::Scope t(computing_timer, "Solve");
     last_linear_iterations += solving.get();
-    take_solved_increment();
   }
 
 

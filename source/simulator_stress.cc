@@ -3,6 +3,7 @@
 // derived from it for output.
 #include <vpcontact/exit_agreement.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
 
@@ -108,37 +109,71 @@ namespace VPContact
 
   template <int dim>
   void
+  Simulator<dim>::update_stress_ahead(const double *const increment_entries)
+  {
+    // Runs in the second thread after the substitutions, on one rank (the
+    // factors solve in the background only there): no MPI function. On one
+    // rank the constraints read only owned entries, and the ghosted
+    // increment has the layout of the owned one. A later active-set
+    // iteration solves again and starts the pass over (stress_ahead is
+    // restarted); the predictor it reads is not touched here.
+    AssertThrow(!increment.has_ghost_elements()
+                  && increment.locally_owned_size()
+                       == increment_owned.locally_owned_size(),
+                ExcInternalError());
+    std::copy(displacement.increment.begin(),
+              displacement.increment.end(),
+              increment_owned.begin());
+    distribute_owned_constraints(constraints, increment_owned);
+    std::copy(increment_owned.begin(),
+              increment_owned.end(),
+              increment.begin());
+    stress_chunk_largest.resize(stress_chunks);
+    stress_ahead.run_ahead(stress_chunks,
+                           [this, increment_entries](const unsigned int c) {
+                             stress_chunk_largest[c]
+                               = update_stress_chunk(c, increment_entries);
+                           });
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::update_stress(const unsigned int n)
   {
     TimerOutput::Scope t(computing_timer, "Stress update");
 
     // Backward Euler solves for the stress again from sigma_{n-1}, with the
     // strain of u_n and the damage zeta_{n-1} (still in the solution).
-    // The chunks run in the threads deal.II has (TBB). Each writes only
-    // the quadrature points of its cells and returns its largest stress
-    // component, to catch an explicit step that has blown up.
+    // The chunks the second thread did ahead (see update_stress_ahead())
+    // are done; the others run in the threads deal.II has (TBB). Each
+    // writes only the quadrature points of its cells and returns its
+    // largest stress component, to catch an explicit step that has blown
+    // up.
     const bool          implicit = viscoplasticity.implicit() && n > 0;
     const double *const increment_entries
       = cell_kinematics.local_entries(increment);
     const double *const solution_entries
       = implicit ? cell_kinematics.local_entries(solution) : nullptr;
+    const unsigned int first = stress_ahead.take_done();
+    stress_chunk_largest.resize(stress_chunks);
     // The local Newton solve of the backward Euler update may fail at a
     // point of one rank's cells only: all ranks stop together.
-    std::vector<double> chunk_largest(stress_chunks);
     stop_together(mpi_communicator, [&]() {
       parallel::apply_to_subranges(
-        0u,
+        first,
         stress_chunks,
         [&](const unsigned int begin, const unsigned int end) {
           for (unsigned int c = begin; c < end; ++c)
-            chunk_largest[c]
+            stress_chunk_largest[c]
               = update_stress_chunk(c, increment_entries, solution_entries);
         },
         1);
     });
-    double largest
-      = *std::max_element(chunk_largest.begin(), chunk_largest.end());
-    largest = Utilities::MPI::max(largest, mpi_communicator);
+    double largest = *std::max_element(stress_chunk_largest.begin(),
+                                       stress_chunk_largest.end());
+    largest        = Utilities::MPI::max(largest, mpi_communicator);
 
     const double limit
       = viscoplasticity.divergence_limit() * material.youngs_modulus();

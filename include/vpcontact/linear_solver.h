@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <future>
 #include <memory>
 #include <string>
@@ -79,11 +80,14 @@ namespace VPContact
      * returns, @p x, @p b and the factors belong to the second thread: the
      * caller must not touch the vectors nor call a function of this solver
      * that is not const (the const ones, such as tolerance(), read only
-     * what the second thread does not write).
+     * what the second thread does not write). @p then, if given, runs in
+     * the second thread after the substitutions, with @p x solved (the
+     * caller's work that only needs x); it must not call MPI.
      */
     std::future<unsigned int>
     solve_in_background(TrilinosWrappers::MPI::Vector       &x,
-                        const TrilinosWrappers::MPI::Vector &b);
+                        const TrilinosWrappers::MPI::Vector &b,
+                        const std::function<void()>         &then = {});
 
     /**
      * The matrix given to initialize() changed in place by a little (the

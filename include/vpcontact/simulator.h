@@ -6,6 +6,7 @@
 #include <vpcontact/boundary_conditions.h>
 #include <vpcontact/cell_kinematics.h>
 #include <vpcontact/checkpointing.h>
+#include <vpcontact/conflict_free_chunks.h>
 #include <vpcontact/convergence_study.h>
 #include <vpcontact/damage_model.h>
 #include <vpcontact/damage_problem.h>
@@ -26,6 +27,7 @@
 #include <vpcontact/tresca_friction.h>
 #include <vpcontact/verification.h>
 #include <vpcontact/viscoplastic_law.h>
+#include <vpcontact/work_ahead.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/index_set.h>
@@ -122,7 +124,7 @@ namespace VPContact
      * The FEValues of a pass over the cells that assembles forces: values,
      * gradients, points and weights on the cell, and on faces for the
      * traction (the rule of the stress history and a Gauss rule on faces).
-     * One per thread of WorkStream, which copies it.
+     * One per thread of a pass (WorkStream copies it).
      */
     struct AssemblyScratch
     {
@@ -269,8 +271,14 @@ namespace VPContact
     // simulator_assembly.cc
     void
     assemble_stiffness_matrix();
+    /// The right-hand side at @p time. With @p predictor_stored the
+    /// predictor and the damage source at the points are those a pass of
+    /// the same step stored (the later active-set iterations), and only
+    /// their work and the loads are assembled.
     void
-    assemble_rhs(const double time, const bool with_viscoplastic_rate);
+    assemble_rhs(const double time,
+                 const bool   with_viscoplastic_rate,
+                 const bool   predictor_stored = false);
     void
     assemble_residual(
       const std::vector<typename DoFHandler<dim>::active_cell_iterator> &cells,
@@ -284,9 +292,26 @@ namespace VPContact
     compute_cell_rhs(const typename DoFHandler<dim>::active_cell_iterator &cell,
                      const double        previous_time,
                      const bool          evaluate_rate,
+                     const bool          predictor_stored,
                      const double *const solution_entries,
-                     AssemblyScratch    &scratch,
-                     CellRhs            &copy);
+                     AssemblyScratch    &scratch);
+    void
+    add_other_cells(const double        previous_time,
+                    const bool          evaluate_rate,
+                    const bool          predictor_stored,
+                    const bool          body_force,
+                    const double *const solution_entries);
+    void
+    subtract_stored_predictor_work(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      AssemblyScratch                                      &scratch) const;
+    void
+    add_plain_cells(const unsigned int  color,
+                    const double        previous_time,
+                    const bool          evaluate_rate,
+                    const bool          predictor_stored,
+                    const bool          body_force,
+                    const double *const solution_entries);
     void
     add_cell_loads_and_lifts(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -324,6 +349,11 @@ namespace VPContact
     update_stress_chunk(const unsigned int  c,
                         const double *const increment_entries,
                         const double *const solution_entries = nullptr);
+    /// In the second thread, after the substitutions beside the damage
+    /// step: the increment from the solved block, then stress chunks until
+    /// the damage step is done (stress_ahead).
+    void
+    update_stress_ahead(const double *const increment_entries);
     void
     compute_cell_stresses(Vector<double>              &von_mises,
                           std::vector<Vector<double>> &components) const;
@@ -467,6 +497,13 @@ namespace VPContact
     /// step, which split them into stress_chunks chunks for the threads.
     std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_cells;
     static constexpr unsigned int stress_chunks = 64;
+    /// The owned cells in chunks and colors for the right-hand side's
+    /// threads (made again when the constrained entries change).
+    ConflictFreeChunks rhs_chunks;
+    /// The stress chunks done ahead in the second thread, and the largest
+    /// stress component of every chunk (see update_stress()).
+    WorkAhead           stress_ahead;
+    std::vector<double> stress_chunk_largest;
 
     /// The damage problem, step 4 (damage scenes only).
     std::unique_ptr<DamageProblem<dim>> damage_problem;
