@@ -124,7 +124,7 @@ namespace VPContact
      * The FEValues of a pass over the cells that assembles forces: values,
      * gradients, points and weights on the cell, and on faces for the
      * traction (the rule of the stress history and a Gauss rule on faces).
-     * One per thread of a pass (WorkStream copies it).
+     * One per thread of a pass over the cells.
      */
     struct AssemblyScratch
     {
