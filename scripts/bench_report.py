@@ -492,7 +492,7 @@ def write_report(out, csv_path, rows):
         "", f"## Against the project's goals at {max(sizes)}²", "",
         "The goals the project set itself for this program against the "
         "peer, the figures of this run, and what limits them.", "",
-    ] + bench_goals.goals(best, sizes, algebras) + scene_3d(csv_path) + setup_scaling(
+    ] + bench_goals.goals(best, sizes, algebras, every) + scene_3d(csv_path) + setup_scaling(
         csv_path)
     # One line per reason, listing the runs it concerns.
     reasons = {}
