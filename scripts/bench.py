@@ -175,11 +175,12 @@ def timer_table(out):
     return total, phases
 
 
-def launch(a, command, ranks, tag, finished):
+def launch(a, command, ranks, tag, finished, timeout=None):
     """Runs a command under /usr/bin/time -v (for the peak memory of each
     process), under mpirun for several ranks, and keeps its output in the
     log folder; (stdout, the row's status, wall time, peak memory summed
-    over the ranks, log)."""
+    over the ranks, log). With @p timeout (seconds) the run gets SIGTERM
+    then, which vpcontact answers by stopping after its step."""
     executable = command[0]
     rss = os.path.join(a.workdir, "logs", tag + ".rss")
     for f in glob.glob(rss + ".*"):
@@ -194,6 +195,8 @@ def launch(a, command, ranks, tag, finished):
         command = (["mpirun", "-np", str(ranks)] +
                    (["--oversubscribe"] if os.cpu_count() < ranks else [])
                    + command)
+    if timeout:
+        command = ["timeout", "-s", "TERM", "-k", "60", str(timeout)] + command
     out, err, rc, wall = run_retrying(command, executable)
     log = os.path.join(a.workdir, "logs", tag + ".log")
     with open(log, "w") as f:

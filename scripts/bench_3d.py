@@ -7,7 +7,7 @@ doc/figures/bench_3d.csv; scripts/bench_report.py puts them into
 doc/performance.md.
 
 Usage: bench_3d.py VPCONTACT [--cells N] [--steps S] [--ranks R ...]
-                             [--scenes paper slip]
+                             [--scenes paper slip] [--timeout T]
 A benchmark reports figures: nothing here passes or fails."""
 import argparse
 import datetime
@@ -50,11 +50,12 @@ def run(a, scene, ranks):
                 f"end\nsubsection Output\n  set Directory = {folder}\n"
                 f"  set Output every = 0\nend\n")
     out, row = bench.launch(a, [a.executable, prm], ranks, tag,
-                            lambda out: "Total wallclock" in out)
+                            lambda out: "Total wallclock" in out,
+                            timeout=a.timeout)
     row.update(scene=scene, cells_per_side=cells, ranks=ranks,
                steps=a.steps)
     if row["status"] != "ok":
-        return row
+        return partial(a, row, folder)
     total, phases = bench.timer_table(out)
     groups = {g: 0. for g in bench.PHASES + ["setup"]}
     for name, (calls, seconds, _) in phases.items():
@@ -81,6 +82,33 @@ def run(a, scene, ranks):
     return row
 
 
+def step_rows(folder):
+    """The rows of the run's statistics.csv after step 0."""
+    path = os.path.join(folder, "statistics.csv")
+    if not os.path.exists(path):
+        return []
+    stats = open(path).read().splitlines()
+    head = stats[0].split(",")
+    return [dict(zip(head, s.split(","))) for s in stats[2:]]
+
+
+def partial(a, row, folder):
+    """A run stopped by --timeout: its time per step, iterations and size
+    from the steps it finished (statistics.csv), no phases."""
+    steps = [r for r in step_rows(folder) if r.get("wall_time")]
+    if not steps or not a.timeout:
+        return row
+    row.update(status=f"stopped after {len(steps)} of {a.steps} steps "
+               f"(--timeout {a.timeout} s)",
+               dofs=int(steps[0]["dofs"]),
+               per_step_ms=1000 * sum(float(r["wall_time"]) for r in steps)
+               / len(steps))
+    for column in ("linear", "active_set"):
+        row[column + "_its"] = sum(int(r[column + "_iterations"])
+                                   for r in steps) / len(steps)
+    return row
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("executable")
@@ -90,6 +118,9 @@ def main():
     p.add_argument("--ranks", type=int, nargs="+", default=[2])
     p.add_argument("--scenes", nargs="+", choices=sorted(SCENES),
                    default=["paper", "slip"])
+    p.add_argument("--timeout", type=int, default=0, help="stop a run "
+                   "after this many seconds and report the steps it "
+                   "finished (0: no limit)")
     p.add_argument("--workdir", default="/tmp/vpcontact_bench_3d")
     p.add_argument("--csv", default=os.path.join(ROOT, "doc", "figures",
                                                  "bench_3d.csv"))

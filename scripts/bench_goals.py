@@ -114,10 +114,13 @@ def goals(best, sizes, algebras, every=None):
           + "; ".join(t for _, t in slower[:6]) if slower else
           "every phase no slower" if every else "–"),
          "Each figure is one round: HEAD's run and the earlier commit's "
-         "right after it (`--rounds N` takes the median of N). The "
-         "largest losses, the AMG setup of the AMG path and the output, "
-         "are not yet traced to their cause. Every phase and its "
-         "decision is in [design.md](design.md)."),
+         "right after it (`--rounds N` takes the median of N). The AMG "
+         "path builds ML once per run with the rigid motions as its "
+         "near-null space, where 211b1ab gave it the constant mode of "
+         "each component: the setup costs more and the displacement "
+         "solve, the step's largest phase, much less. The output's loss "
+         "on the MUMPS and AMG paths is not yet traced. Every phase and "
+         "its decision is in [design.md](design.md)."),
         ("CG + AMG at most 0.5 of the peer's CG + GAMG, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["total_s"], g1["total_s"]))),
          "The AMG cycles on the displacement block (ML or GAMG) are the "

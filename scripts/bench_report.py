@@ -327,10 +327,12 @@ def scene_3d(csv_path):
                         "bench_3d.csv")
     if not os.path.exists(path):
         return []
-    rows = [r for r in read_csv(path) if r["status"] == "ok"]
+    rows = [r for r in read_csv(path) if r["status"] == "ok"
+            or r["status"].startswith("stopped after")]
     if not rows:
         return []
     m = rows[0]
+    stopped = [r for r in rows if r["status"] != "ok"]
     lines = [
         "", "## The 3D scenes", "",
         "`prm/paper_fig1_3d.prm` (*paper*: the unit cube, Tresca friction "
@@ -351,12 +353,17 @@ def scene_3d(csv_path):
         "|" + "---|" * (10 + len(PHASE_TITLES))]
     for r in rows:
         lines.append(
-            f"| {r.get('scene') or 'paper'} | {r['cells_per_side']} | "
+            f"| {r.get('scene') or 'paper'}"
+            f"{' (stopped)' if r in stopped else ''} | {r['cells_per_side']} | "
             f"{r['ranks']} | {r['dofs']} | "
             f"{fmt(r['total_s'])} | {fmt(r['per_step_ms'])} | " +
             " | ".join(fmt(r.get(p + "_ms")) for p, _ in PHASE_TITLES) +
             f" | {fmt(r['linear_its'])} | {fmt(r['active_set_its'])} | "
             f"{fmt(r['mem_rank0_mb'])} | {fmt(r['mem_all_mb'])} |")
+    for r in stopped:
+        lines += ["", f"*{r.get('scene')} (stopped)*: {r['status']}; its "
+                  "time per step is the mean wall time of the steps it "
+                  "finished (statistics.csv), without the split by phase."]
     return lines
 
 
