@@ -354,8 +354,10 @@ namespace VPContact
     // as the first assembly has stored the source (solve_increment()). It
     // reads the damage entries of the solution, which the increment leaves
     // alone and which is only updated after the active-set loop, and the
-    // source at the points; the later active-set iterations assemble the
-    // same source again from the same sigma_{n-1} and u_{n-1}. The
+    // source at the points, which the later active-set iterations reuse
+    // as stored (assemble_rhs() with predictor_stored). The second thread
+    // may meanwhile write the new stress at the points
+    // (update_stress_ahead()), which the damage step does not read. The
     // implicit scheme's Newton iterations keep the order of the steps.
     const std::function<void()> damage_step = [this, n]() {
       damage_problem->solve(n, solution_owned, stress_history);
