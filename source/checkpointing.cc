@@ -214,11 +214,10 @@ namespace VPContact
 
 
   void
-  Checkpointing::parse_parameters(ParameterHandler &prm)
+  Checkpointing::parse_parameters(ParameterHandler  &prm,
+                                  const std::string &directory)
   {
-    prm.enter_subsection("Output");
-    output_directory = prm.get("Directory");
-    prm.leave_subsection();
+    output_directory = directory;
     prm.enter_subsection("Checkpoint");
     every_steps       = prm.get_integer("Every steps");
     every_seconds     = prm.get_double("Every seconds");

@@ -106,7 +106,7 @@ namespace VPContact
     geometry.set_finest_growth(convergence_study.refinement().largest_growth(
                                  geometry.global_refinements()),
                                convergence_study.refinement().size_entries());
-    checkpointing.parse_parameters(prm);
+    checkpointing.parse_parameters(prm, output_writer.base_directory());
     error_estimator
       .parse_parameters(prm, convergence_study.refinement().needs_indicators());
     if (damage_model.is_active())

@@ -54,8 +54,10 @@ namespace VPContact
     declare_parameters(ParameterHandler &prm);
 
     /// Read the section and record the parameters that define the problem.
+    /// @p directory is Output/Directory, which OutputWriter owns and
+    /// parses: the default checkpoint folder lies in it.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const std::string &directory);
 
     /**
      * Record @p value under @p entry with the parameters that define the

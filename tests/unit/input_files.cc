@@ -146,7 +146,7 @@ namespace
         ParameterHandler prm;
         declare(prm, output, folder);
         Checkpointing checkpointing;
-        checkpointing.parse_parameters(prm);
+        checkpointing.parse_parameters(prm, output);
         expect_refusal("Output/Directory = " + output
                          + ", Checkpoint/Folder = " + folder,
                        [&] {
@@ -164,7 +164,7 @@ namespace
     ParameterHandler prm;
     declare(prm, "results", "own/checkpoint");
     Checkpointing checkpointing;
-    checkpointing.parse_parameters(prm);
+    checkpointing.parse_parameters(prm, "results");
     checkpointing.check_folders("results", communicator);
     for (unsigned int n = 1; n <= 2; ++n)
       {
