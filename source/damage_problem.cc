@@ -128,7 +128,7 @@ namespace VPContact
     , timer(timer)
     , communicator(communicator)
   {
-    system.parse_parameters(prm);
+    system.parse_parameters(prm, linear_solver.package());
   }
 
 

@@ -88,7 +88,8 @@ namespace VPContact
 
   template <int dim>
   void
-  DamageSystem<dim>::parse_parameters(ParameterHandler &prm)
+  DamageSystem<dim>::parse_parameters(ParameterHandler   &prm,
+                                      const LinearAlgebra linear_algebra)
   {
     prm.enter_subsection("Solver");
     const std::string kind = prm.get("Damage preconditioner");
@@ -99,8 +100,7 @@ namespace VPContact
       = (kind == "modified incomplete Cholesky" ?
            DamageRegionSolver::Preconditioner::modified_incomplete_cholesky :
            DamageRegionSolver::Preconditioner::diagonal);
-    package     = (prm.get("Linear algebra") == "PETSc" ? LinearAlgebra::petsc :
-                                                          LinearAlgebra::trilinos);
+    package     = linear_algebra;
     use_snes_vi = (prm.get("Damage obstacle solver") == "SNES VI");
     AssertThrow(!use_snes_vi || package == LinearAlgebra::petsc,
                 ExcMessage(parameter_message(

@@ -288,6 +288,14 @@ namespace VPContact
 
 
 
+  LinearAlgebra
+  LinearSolver::package() const
+  {
+    return linear_algebra;
+  }
+
+
+
   bool
   LinearSolver::is_direct() const
   {

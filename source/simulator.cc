@@ -12,15 +12,15 @@ namespace VPContact
 {
   namespace
   {
-    // Whether the scene has damage: read here because the element is built
-    // before the modules parse their sections.
-    bool
-    with_damage(ParameterHandler &prm)
+    // The section "Damage", parsed before the element is built: whether
+    // the scene has damage decides whether the FESystem has a damage
+    // component. Its owner parses it, and the simulator asks the owner.
+    template <int dim>
+    const DamageModel<dim> &
+    parsed_damage_model(DamageModel<dim> &model, ParameterHandler &prm)
     {
-      prm.enter_subsection("Damage");
-      const bool damage = (prm.get("Model") != "none");
-      prm.leave_subsection();
-      return damage;
+      model.parse_parameters(prm);
+      return model;
     }
 
     // The section "Geometry", parsed first: its cell type chooses the
@@ -79,7 +79,8 @@ namespace VPContact
     // trigger TimerOutput's collective clean-up in its destructor.
     , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , geometry(parsed_geometry<dim>(prm, parameter_directory, communicator))
-    , discretization(geometry.simplex_cells(), with_damage(prm))
+    , discretization(geometry.simplex_cells(),
+                     parsed_damage_model(damage_model, prm).is_active())
     , mesh(discretization.make_triangulation(communicator))
     , triangulation(*mesh)
     , fe(discretization.finite_element())
@@ -90,7 +91,6 @@ namespace VPContact
     material.parse_parameters(prm);
     viscoplasticity.parse_parameters(prm);
     viscoplastic_law = viscoplasticity.create_law(prm);
-    damage_model.parse_parameters(prm);
     boundary_conditions.parse_parameters(prm);
     friction.parse_parameters(prm);
     initial_conditions.parse_parameters(prm);

@@ -123,11 +123,10 @@ namespace VPContact
     release();
     const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
     const long              n      = epetra.NumMyRows();
-    AssertThrow(static_cast<types::global_dof_index>(n) == matrix.m(),
-                ExcMessage("The Cholesky factorization needs the whole "
-                           "displacement matrix on one process; under "
-                           "mpirun choose Solver/Linear solver = MUMPS or "
-                           "CG with AMG."));
+    // create_spd_solver() refuses Cholesky under mpirun with the message
+    // for the user; here the whole matrix is on this process.
+    Assert(static_cast<types::global_dof_index>(n) == matrix.m(),
+           ExcInternalError());
 
     cholmod_sparse *lower = lower_triangle(epetra, common);
     factor                = cholmod_l_analyze(lower, &common);

@@ -347,6 +347,21 @@ namespace VPContact
 
 
 
+    // The entry "Truncation L", which the laws that truncate read (and
+    // only they: it means nothing to the others).
+    double
+    truncation_entry(ParameterHandler &prm)
+    {
+      const double truncation = prm.get_double("Truncation L");
+      VPContactCheckParameter(truncation > 0,
+                              "Viscoplasticity/Truncation L",
+                              truncation,
+                              "must be positive [Pa].");
+      return truncation;
+    }
+
+
+
     template <int dim>
     bool
     register_builtin_laws()
@@ -364,7 +379,7 @@ namespace VPContact
                     nullptr,
                     [](ParameterHandler &prm) {
                       return std::make_unique<DamageTruncatedLaw<dim>>(
-                        prm.get_double("Truncation L"));
+                        truncation_entry(prm));
                     });
       Registry::add(
         "maxwell",
@@ -379,7 +394,7 @@ namespace VPContact
           return std::make_unique<MaxwellLaw<dim>>(
             eta,
             prm.get_bool("Truncate Maxwell") ?
-              prm.get_double("Truncation L") :
+              truncation_entry(prm) :
               std::numeric_limits<double>::infinity());
         });
       return true;
@@ -438,19 +453,14 @@ namespace VPContact
   ViscoplasticityParameters<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Viscoplasticity");
-    law_name                = prm.get("Law");
-    divergence_factor       = prm.get_double("Divergence limit");
-    implicit_step           = (prm.get("Time integration") == "implicit");
-    const double truncation = prm.get_double("Truncation L");
+    law_name          = prm.get("Law");
+    divergence_factor = prm.get_double("Divergence limit");
+    implicit_step     = (prm.get("Time integration") == "implicit");
     prm.leave_subsection();
     VPContactCheckParameter(divergence_factor > 0,
                             "Viscoplasticity/Divergence limit",
                             divergence_factor,
                             "must be positive, e.g. 1e6.");
-    VPContactCheckParameter(truncation > 0,
-                            "Viscoplasticity/Truncation L",
-                            truncation,
-                            "must be positive [Pa].");
   }
 
 

@@ -53,8 +53,10 @@ namespace VPContact
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /// The section "Solver"'s damage entries; @p linear_algebra is the
+    /// package of Solver/Linear algebra, which LinearSolver parses.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const LinearAlgebra linear_algebra);
 
     /**
      * Number the damage degrees of freedom (component @p component of the

@@ -115,6 +115,11 @@ namespace VPContact
     bool
     is_direct() const;
 
+    /// The package of Solver/Linear algebra, for the damage solves, which
+    /// use the same one.
+    LinearAlgebra
+    package() const;
+
     double
     tolerance() const;
 

@@ -96,8 +96,10 @@ main(int argc, char **argv)
         prm.set("Linear algebra", package);
         prm.set("Damage preconditioner", preconditioner);
         prm.leave_subsection();
+        LinearSolver linear_solver;
+        linear_solver.parse_parameters(prm);
         DamageSystem<2> system;
-        system.parse_parameters(prm);
+        system.parse_parameters(prm, linear_solver.package());
         system.reinit(dof_handler,
                       2,
                       dof_handler.locally_owned_dofs(),
