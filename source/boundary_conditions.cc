@@ -2,6 +2,7 @@
 // the load functions.
 #include <vpcontact/boundary_conditions.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/parsed_function.h>
 
 #include <deal.II/base/utilities.h>
@@ -132,7 +133,7 @@ namespace VPContact
       const std::map<types::boundary_id, ComponentMask> &prescribed_ids,
       FunctionParser<dim>                               &g,
       const double                                       time,
-      const TrilinosWrappers::MPI::Vector               *previous_displacement,
+      const LA::MPI::Vector                             *previous_displacement,
       AffineConstraints<double>                         &constraints)
     {
       const unsigned int n_components = dof_handler.get_fe().n_components();
@@ -302,10 +303,10 @@ namespace VPContact
   template <int dim>
   void
   BoundaryConditions<dim>::make_constraints(
-    const DoFHandler<dim>               &dof_handler,
-    AffineConstraints<double>           &constraints,
-    const double                         time,
-    const TrilinosWrappers::MPI::Vector *previous_displacement) const
+    const DoFHandler<dim>     &dof_handler,
+    AffineConstraints<double> &constraints,
+    const double               time,
+    const LA::MPI::Vector     *previous_displacement) const
   {
     // Dirichlet parts first: interpolate_boundary_values leaves alone the
     // degrees of freedom that are already constrained, and so does the

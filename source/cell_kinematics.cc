@@ -2,6 +2,7 @@
 // locally owned cell, computed once per mesh, and the strains, damage and
 // stress work evaluated from them.
 #include <vpcontact/cell_kinematics.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
@@ -69,9 +70,9 @@ namespace VPContact
 
   template <int dim>
   void
-  CellKinematics<dim>::reinit(const DoFHandler<dim>               &dof_handler,
-                              const Quadrature<dim>               &quadrature,
-                              const TrilinosWrappers::MPI::Vector &ghosted)
+  CellKinematics<dim>::reinit(const DoFHandler<dim> &dof_handler,
+                              const Quadrature<dim> &quadrature,
+                              const LA::MPI::Vector &ghosted)
   {
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     check_same_scalar_elements(fe, max_nodes);
@@ -136,8 +137,7 @@ namespace VPContact
 
   template <int dim>
   const double *
-  CellKinematics<dim>::local_entries(
-    const TrilinosWrappers::MPI::Vector &vector) const
+  CellKinematics<dim>::local_entries(const LA::MPI::Vector &vector) const
   {
     Assert(layout, ExcMessage("CellKinematics::reinit() was not called."));
     // A full comparison of two layouts walks every index; it is done once

@@ -1,5 +1,6 @@
 // Writing and reading the fields of a checkpoint with the distributed mesh.
 #include <vpcontact/checkpoint_fields.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/distributed/solution_transfer.h>
 
@@ -11,17 +12,16 @@ namespace VPContact
   {
     template <int dim>
     void
-    save(parallel::distributed::Triangulation<dim> &triangulation,
-         const DoFHandler<dim>                     &dof_handler,
-         const std::vector<const TrilinosWrappers::MPI::Vector *> &vectors,
-         const StressHistory<dim>                                 &history,
-         const unsigned int                                        n_q_points,
-         const std::string                                        &filename)
+    save(parallel::distributed::Triangulation<dim>  &triangulation,
+         const DoFHandler<dim>                      &dof_handler,
+         const std::vector<const LA::MPI::Vector *> &vectors,
+         const StressHistory<dim>                   &history,
+         const unsigned int                          n_q_points,
+         const std::string                          &filename)
     {
       // The transfer object registers its callback now and must live until
       // save() has called it.
-      parallel::distributed::SolutionTransfer<dim,
-                                              TrilinosWrappers::MPI::Vector>
+      parallel::distributed::SolutionTransfer<dim, LA::MPI::Vector>
         solution_transfer(dof_handler);
       solution_transfer.prepare_for_serialization(vectors);
 
@@ -52,17 +52,16 @@ namespace VPContact
 
     template <int dim>
     void
-    load(parallel::distributed::Triangulation<dim>          &triangulation,
-         const DoFHandler<dim>                              &dof_handler,
-         const std::vector<TrilinosWrappers::MPI::Vector *> &vectors,
-         StressHistory<dim>                                 &history,
-         const unsigned int                                  n_q_points)
+    load(parallel::distributed::Triangulation<dim> &triangulation,
+         const DoFHandler<dim>                     &dof_handler,
+         const std::vector<LA::MPI::Vector *>      &vectors,
+         StressHistory<dim>                        &history,
+         const unsigned int                         n_q_points)
     {
       // In the order of save(): each party registers again and unpacks.
-      parallel::distributed::SolutionTransfer<dim,
-                                              TrilinosWrappers::MPI::Vector>
-        solution_transfer(dof_handler);
-      std::vector<TrilinosWrappers::MPI::Vector *> out(vectors);
+      parallel::distributed::SolutionTransfer<dim, LA::MPI::Vector>
+                                     solution_transfer(dof_handler);
+      std::vector<LA::MPI::Vector *> out(vectors);
       solution_transfer.deserialize(out);
 
       constexpr unsigned int n_values = QuadraturePointHistory<dim>::n_values;
@@ -127,14 +126,14 @@ namespace VPContact
     template void
     save(parallel::distributed::Triangulation<2> &,
          const DoFHandler<2> &,
-         const std::vector<const TrilinosWrappers::MPI::Vector *> &,
+         const std::vector<const LA::MPI::Vector *> &,
          const StressHistory<2> &,
          const unsigned int,
          const std::string &);
     template void
     save(parallel::distributed::Triangulation<3> &,
          const DoFHandler<3> &,
-         const std::vector<const TrilinosWrappers::MPI::Vector *> &,
+         const std::vector<const LA::MPI::Vector *> &,
          const StressHistory<3> &,
          const unsigned int,
          const std::string &);
@@ -149,13 +148,13 @@ namespace VPContact
     template void
     load(parallel::distributed::Triangulation<2> &,
          const DoFHandler<2> &,
-         const std::vector<TrilinosWrappers::MPI::Vector *> &,
+         const std::vector<LA::MPI::Vector *> &,
          StressHistory<2> &,
          const unsigned int);
     template void
     load(parallel::distributed::Triangulation<3> &,
          const DoFHandler<3> &,
-         const std::vector<TrilinosWrappers::MPI::Vector *> &,
+         const std::vector<LA::MPI::Vector *> &,
          StressHistory<3> &,
          const unsigned int);
   } // namespace CheckpointFields

@@ -1,5 +1,6 @@
 // The primal-dual active set for the damage bounds [0, 1].
 #include <vpcontact/damage_bounds.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -30,10 +31,10 @@ namespace VPContact
 
 
   void
-  DamageBounds::setup(const IndexSet                      &damage_dofs,
-                      const IndexSet                      &locally_owned_dofs,
-                      const TrilinosWrappers::MPI::Vector &lumped_mass,
-                      const MPI_Comm                       mpi_communicator)
+  DamageBounds::setup(const IndexSet        &damage_dofs,
+                      const IndexSet        &locally_owned_dofs,
+                      const LA::MPI::Vector &lumped_mass,
+                      const MPI_Comm         mpi_communicator)
   {
     // Where each node sits in the local storage of a ghosted vector laid
     // out like @p lumped_mass, and of an owned one: update() and
@@ -68,9 +69,9 @@ namespace VPContact
 
 
   void
-  DamageBounds::held_changes(const TrilinosWrappers::MPI::Vector &old_damage,
-                             std::vector<unsigned int>           &held,
-                             TrilinosWrappers::MPI::Vector       &change) const
+  DamageBounds::held_changes(const LA::MPI::Vector     &old_damage,
+                             std::vector<unsigned int> &held,
+                             LA::MPI::Vector           &change) const
   {
     const double *old_values    = old_damage.begin();
     double       *change_values = change.begin();
@@ -87,8 +88,7 @@ namespace VPContact
 
 
   void
-  DamageBounds::set_complementarity_scale(
-    const TrilinosWrappers::MPI::Vector &diagonal)
+  DamageBounds::set_complementarity_scale(const LA::MPI::Vector &diagonal)
   {
     scale.resize(dofs.size());
     for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -98,9 +98,9 @@ namespace VPContact
 
 
   unsigned int
-  DamageBounds::update(const TrilinosWrappers::MPI::Vector &residual,
-                       const TrilinosWrappers::MPI::Vector &damage,
-                       const double                         time_step)
+  DamageBounds::update(const LA::MPI::Vector &residual,
+                       const LA::MPI::Vector &damage,
+                       const double           time_step)
   {
     AssertThrow(residual.trilinos_vector().Map().NumMyElements() == n_ghosted
                   && damage.trilinos_vector().Map().NumMyElements()
@@ -131,7 +131,7 @@ namespace VPContact
 
 
   std::vector<unsigned int>
-  DamageBounds::front(const TrilinosWrappers::SparseMatrix &matrix)
+  DamageBounds::front(const LA::SparseMatrix &matrix)
   {
     return (Utilities::MPI::n_mpi_processes(communicator) == 1 ?
               front_by_graph(matrix) :
@@ -141,8 +141,7 @@ namespace VPContact
 
 
   std::vector<unsigned int>
-  DamageBounds::front_by_product(
-    const TrilinosWrappers::SparseMatrix &matrix) const
+  DamageBounds::front_by_product(const LA::SparseMatrix &matrix) const
   {
     // With marks m = 1 on the nodes below 1, (K m)_i sums the entries K_ij
     // of the marked neighbours j of node i. Where kappa A is an M-matrix
@@ -177,7 +176,7 @@ namespace VPContact
 
 
   std::vector<unsigned int>
-  DamageBounds::front_by_graph(const TrilinosWrappers::SparseMatrix &matrix)
+  DamageBounds::front_by_graph(const LA::SparseMatrix &matrix)
   {
     // On one rank every neighbour is a node of this rank, and the front is
     // found from the rows of the upper nodes alone: once the damage has
@@ -245,7 +244,7 @@ namespace VPContact
 
 
   void
-  DamageBounds::begin_step(const TrilinosWrappers::SparseMatrix &matrix)
+  DamageBounds::begin_step(const LA::SparseMatrix &matrix)
   {
     upper_at_start.resize(dofs.size());
     for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -271,9 +270,8 @@ namespace VPContact
 
 
   unsigned int
-  DamageBounds::free_ahead_of_front(
-    const TrilinosWrappers::SparseMatrix &matrix,
-    const unsigned int                    rings)
+  DamageBounds::free_ahead_of_front(const LA::SparseMatrix &matrix,
+                                    const unsigned int      rings)
   {
     // The first ring is the front; on one rank each further ring is found
     // next to the one before, on several by the product again (a ring may
@@ -332,7 +330,7 @@ namespace VPContact
 
 
   void
-  DamageBounds::write_state(TrilinosWrappers::MPI::Vector &state) const
+  DamageBounds::write_state(LA::MPI::Vector &state) const
   {
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (owned[i])
@@ -343,7 +341,7 @@ namespace VPContact
 
 
   void
-  DamageBounds::read_state(const TrilinosWrappers::MPI::Vector &state)
+  DamageBounds::read_state(const LA::MPI::Vector &state)
   {
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {

@@ -1,6 +1,7 @@
 // PETSc's SNES VI on the damage obstacle problem (see the header).
 #include <vpcontact/damage_obstacle_snes.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/petsc_tools.h>
 
 
@@ -28,7 +29,7 @@ namespace VPContact
 
 
   void
-  DamageObstacleSnes::initialize(const TrilinosWrappers::SparseMatrix &matrix)
+  DamageObstacleSnes::initialize(const LA::SparseMatrix &matrix)
   {
     release();
     K = copy_to_petsc(matrix, 1);
@@ -108,11 +109,11 @@ namespace VPContact
 
 
   unsigned int
-  DamageObstacleSnes::solve(const TrilinosWrappers::MPI::Vector &b,
-                            TrilinosWrappers::MPI::Vector       &zeta,
-                            const double                         tolerance,
-                            const unsigned int                   max_iterations,
-                            const unsigned int max_linear_iterations)
+  DamageObstacleSnes::solve(const LA::MPI::Vector &b,
+                            LA::MPI::Vector       &zeta,
+                            const double           tolerance,
+                            const unsigned int     max_iterations,
+                            const unsigned int     max_linear_iterations)
   {
     Assert(snes != nullptr, ExcMessage("initialize() first."));
     copy_to_petsc(b, load);

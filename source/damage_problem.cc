@@ -6,6 +6,7 @@
 #include <vpcontact/discretization.h>
 #include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -139,7 +140,7 @@ namespace VPContact
                             const Quadrature<dim> &quadrature_in,
                             const IndexSet        &locally_owned_dofs,
                             const IndexSet        &locally_relevant_dofs,
-                            TrilinosWrappers::MPI::Vector &solution_owned)
+                            LA::MPI::Vector       &solution_owned)
   {
     TimerOutput::Scope t(timer, "Setup");
     dof_handler = &dof_handler_in;
@@ -187,13 +188,11 @@ namespace VPContact
     // The bound iteration's complementarity test is scaled by the matrix
     // diagonal, which the mass dominates on coarse meshes and the diffusion
     // on fine ones (see DamageBounds::set_complementarity_scale()).
-    TrilinosWrappers::MPI::Vector diagonal(system.owned(), communicator);
+    LA::MPI::Vector diagonal(system.owned(), communicator);
     for (const auto dof : system.owned())
       diagonal(dof) = system.matrix().diag_element(dof);
     diagonal.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector ghosted(system.owned(),
-                                          system.relevant(),
-                                          communicator);
+    LA::MPI::Vector ghosted(system.owned(), system.relevant(), communicator);
     ghosted = diagonal;
     bounds.set_complementarity_scale(ghosted);
   }
@@ -220,7 +219,7 @@ namespace VPContact
                             update_values | update_JxW_values);
     std::vector<types::global_dof_index> dof_indices;
     Vector<double>                       local_mass(shape.size());
-    TrilinosWrappers::MPI::Vector        mass;
+    LA::MPI::Vector                      mass;
     mass.reinit(system.owned(), system.relevant(), communicator, true);
     const unsigned int n_entries
       = dof_handler->get_triangulation().n_active_cells() * shape.size();
@@ -286,7 +285,7 @@ namespace VPContact
   template <int dim>
   void
   DamageProblem<dim>::interpolate_initial_damage(
-    TrilinosWrappers::MPI::Vector &solution_owned)
+    LA::MPI::Vector &solution_owned)
   {
     // zeta_0, checked against the bounds at every node.
     const unsigned int n_components = dof_handler->get_fe().n_components();
@@ -296,9 +295,8 @@ namespace VPContact
       n_components);
     ComponentMask damage_mask(n_components, false);
     damage_mask.set(dim, true);
-    TrilinosWrappers::MPI::Vector interpolated(
-      solution_owned.locally_owned_elements(),
-      communicator);
+    LA::MPI::Vector interpolated(solution_owned.locally_owned_elements(),
+                                 communicator);
     VectorTools::interpolate(*dof_handler, initial, interpolated, damage_mask);
     system.gather(interpolated, damage_owned);
     system.distribute_hanging_nodes(damage_owned);
@@ -319,7 +317,7 @@ namespace VPContact
 
   template <int dim>
   std::pair<double, double>
-  DamageProblem<dim>::range(const TrilinosWrappers::MPI::Vector &v) const
+  DamageProblem<dim>::range(const LA::MPI::Vector &v) const
   {
     // min and max of the owned entries of a compact damage vector, over all
     // ranks.

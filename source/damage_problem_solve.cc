@@ -5,6 +5,7 @@
 #include <vpcontact/finite_values.h>
 #include <vpcontact/ghost_exchange.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +15,9 @@ namespace VPContact
 {
   template <int dim>
   void
-  DamageProblem<dim>::solve(const unsigned int                   n,
-                            const TrilinosWrappers::MPI::Vector &solution_owned,
-                            const StressHistory<dim>            &history)
+  DamageProblem<dim>::solve(const unsigned int        n,
+                            const LA::MPI::Vector    &solution_owned,
+                            const StressHistory<dim> &history)
   {
     // zeta_{n-1} from the solution and the load b of this step. A source
     // that evaluates to NaN or infinity anywhere spoils the whole load; say
@@ -60,8 +61,8 @@ namespace VPContact
     // M zeta_{n-1}/k. First the fast search (see find_sets_fast()); should
     // it not settle, the plain method from the sets of the previous step,
     // every solve to the Solver tolerance.
-    const TrilinosWrappers::SparseMatrix &K = system.matrix();
-    TrilinosWrappers::MPI::Vector         step_rhs(old_damage);
+    const LA::SparseMatrix &K = system.matrix();
+    LA::MPI::Vector         step_rhs(old_damage);
     K.vmult(step_rhs, old_damage);
     step_rhs.sadd(-1., 1., load);
     bounds.begin_step(K);
@@ -106,8 +107,7 @@ namespace VPContact
 
   template <int dim>
   bool
-  DamageProblem<dim>::find_sets_fast(
-    const TrilinosWrappers::MPI::Vector &step_rhs)
+  DamageProblem<dim>::find_sets_fast(const LA::MPI::Vector &step_rhs)
   {
     // The first sets: one semismooth Newton step from zeta_{n-1} with the
     // multipliers of this step's load, b - K zeta_{n-1}. It starts from the
@@ -153,9 +153,8 @@ namespace VPContact
 
   template <int dim>
   unsigned int
-  DamageProblem<dim>::solve_with_sets(
-    const TrilinosWrappers::MPI::Vector &step_rhs,
-    const double                         tolerance)
+  DamageProblem<dim>::solve_with_sets(const LA::MPI::Vector &step_rhs,
+                                      const double           tolerance)
   {
     TimerOutput::Scope t(timer, "Damage solve");
 
@@ -199,8 +198,8 @@ namespace VPContact
 
   template <int dim>
   void
-  DamageProblem<dim>::store(const unsigned int             n,
-                            TrilinosWrappers::MPI::Vector &solution_owned)
+  DamageProblem<dim>::store(const unsigned int n,
+                            LA::MPI::Vector   &solution_owned)
   {
     // Nodes between the bounds satisfy them up to the solver tolerance;
     // clip them onto [0, 1] (the exact discrete solution lies there) and
@@ -280,10 +279,10 @@ namespace VPContact
   template <int dim>
   void
   DamageProblem<dim>::write_checkpoint(
-    TrilinosWrappers::MPI::Vector &sets_owned,
+    LA::MPI::Vector               &sets_owned,
     std::map<std::string, double> &counters) const
   {
-    TrilinosWrappers::MPI::Vector bound_sets(system.owned(), communicator);
+    LA::MPI::Vector bound_sets(system.owned(), communicator);
     bounds.write_state(bound_sets);
     system.scatter(bound_sets, sets_owned);
     counters["max_damage_violation"] = largest_violation;
@@ -295,14 +294,12 @@ namespace VPContact
   template <int dim>
   void
   DamageProblem<dim>::read_checkpoint(
-    const TrilinosWrappers::MPI::Vector              &sets_owned,
+    const LA::MPI::Vector                            &sets_owned,
     const std::function<double(const std::string &)> &counter)
   {
-    TrilinosWrappers::MPI::Vector bound_sets(system.owned(), communicator);
+    LA::MPI::Vector bound_sets(system.owned(), communicator);
     system.gather(sets_owned, bound_sets);
-    TrilinosWrappers::MPI::Vector ghosted(system.owned(),
-                                          system.relevant(),
-                                          communicator);
+    LA::MPI::Vector ghosted(system.owned(), system.relevant(), communicator);
     ghosted = bound_sets;
     bounds.read_state(ghosted);
     largest_violation = counter("max_damage_violation");

@@ -2,6 +2,7 @@
 // Cholesky preconditioner, applied with Eisenstat's trick (see
 // damage_region_solver.h).
 #include <vpcontact/damage_region_solver.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/solver_control.h>
@@ -235,11 +236,10 @@ namespace VPContact
 
 
   unsigned int
-  DamageRegionSolver::solve_eisenstat(
-    const TrilinosWrappers::MPI::Vector &b_vector,
-    TrilinosWrappers::MPI::Vector       &x_vector,
-    const double                         tolerance,
-    const unsigned int                   max_iterations)
+  DamageRegionSolver::solve_eisenstat(const LA::MPI::Vector &b_vector,
+                                      LA::MPI::Vector       &x_vector,
+                                      const double           tolerance,
+                                      const unsigned int     max_iterations)
   {
     // With C = D + L and P = C D^{-1} C^T (on F), PCG for K x = b is CG
     // for K^ = C^{-1} K C^{-T} in x^ = C^T x with the preconditioner D

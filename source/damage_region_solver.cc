@@ -1,6 +1,7 @@
 // CG for the damage problem on the free nodes, with (M)IC(0) of a region
 // around them (see damage_region_solver.h).
 #include <vpcontact/damage_region_solver.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/support_product.h>
 
 #include <deal.II/base/mpi.h>
@@ -13,10 +14,10 @@
 namespace VPContact
 {
   void
-  DamageRegionSolver::initialize(const TrilinosWrappers::SparseMatrix &matrix,
-                                 const IndexSet                       &owned,
-                                 const MPI_Comm       communicator_in,
-                                 const Preconditioner kind_in)
+  DamageRegionSolver::initialize(const LA::SparseMatrix &matrix,
+                                 const IndexSet         &owned,
+                                 const MPI_Comm          communicator_in,
+                                 const Preconditioner    kind_in)
   {
     communicator  = communicator_in;
     kind          = kind_in;
@@ -471,11 +472,11 @@ namespace VPContact
 
 
   unsigned int
-  DamageRegionSolver::solve(const TrilinosWrappers::MPI::Vector &b_vector,
-                            TrilinosWrappers::MPI::Vector       &x_vector,
-                            const std::vector<unsigned int>     &held,
-                            const double                         tolerance,
-                            const unsigned int                   max_iterations)
+  DamageRegionSolver::solve(const LA::MPI::Vector           &b_vector,
+                            LA::MPI::Vector                 &x_vector,
+                            const std::vector<unsigned int> &held,
+                            const double                     tolerance,
+                            const unsigned int               max_iterations)
   {
     select_free_nodes(held);
     if (kind == Preconditioner::diagonal)

@@ -1,6 +1,7 @@
 // The damage problem's linear algebra on the damage degrees of freedom alone.
 #include <vpcontact/damage_system.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/owned_constraints.h>
 
 #include <deal.II/base/mpi.h>
@@ -128,11 +129,10 @@ namespace VPContact
       if (fe.system_to_component_index(i).first == component)
         damage_shape_functions.push_back(i);
 
-    const TrilinosWrappers::MPI::Vector index
-      = number_dofs(dof_handler,
-                    locally_owned_dofs,
-                    locally_relevant_dofs,
-                    communicator);
+    const LA::MPI::Vector index = number_dofs(dof_handler,
+                                              locally_owned_dofs,
+                                              locally_relevant_dofs,
+                                              communicator);
     make_hanging_node_constraints(dof_handler, locally_relevant_dofs, index);
     has_hanging_nodes = (Utilities::MPI::max(static_cast<unsigned int>(
                                                constraints.n_constraints()),
@@ -157,7 +157,7 @@ namespace VPContact
 
 
   template <int dim>
-  TrilinosWrappers::MPI::Vector
+  LA::MPI::Vector
   DamageSystem<dim>::number_dofs(const DoFHandler<dim> &dof_handler,
                                  const IndexSet        &locally_owned_dofs,
                                  const IndexSet        &locally_relevant_dofs,
@@ -187,7 +187,7 @@ namespace VPContact
 
     // The compact index of every relevant damage dof, through a ghosted
     // FESystem vector that holds it (exact in a double up to 2^53).
-    TrilinosWrappers::MPI::Vector index_owned(locally_owned_dofs, communicator);
+    LA::MPI::Vector index_owned(locally_owned_dofs, communicator);
     full_position.clear();
     // A rank may own no cell (and no damage node) at all.
     types::global_dof_index next
@@ -199,9 +199,9 @@ namespace VPContact
         full_position.push_back(locally_owned_dofs.index_within_set(dof));
       }
     index_owned.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector index(locally_owned_dofs,
-                                        locally_relevant_dofs,
-                                        communicator);
+    LA::MPI::Vector index(locally_owned_dofs,
+                          locally_relevant_dofs,
+                          communicator);
     index = index_owned;
 
     seen.clear();
@@ -227,8 +227,8 @@ namespace VPContact
 
   template <int dim>
   types::global_dof_index
-  DamageSystem<dim>::to_compact(const TrilinosWrappers::MPI::Vector &index,
-                                const types::global_dof_index        dof)
+  DamageSystem<dim>::to_compact(const LA::MPI::Vector        &index,
+                                const types::global_dof_index dof)
   {
     return static_cast<types::global_dof_index>(std::llround(index(dof)));
   }
@@ -238,9 +238,9 @@ namespace VPContact
   template <int dim>
   void
   DamageSystem<dim>::make_hanging_node_constraints(
-    const DoFHandler<dim>               &dof_handler,
-    const IndexSet                      &locally_relevant_dofs,
-    const TrilinosWrappers::MPI::Vector &index)
+    const DoFHandler<dim> &dof_handler,
+    const IndexSet        &locally_relevant_dofs,
+    const LA::MPI::Vector &index)
   {
     // The hanging node constraints of the FESystem, translated. A hanging
     // damage node depends on damage nodes of a cell this rank sees, so its
@@ -334,7 +334,7 @@ namespace VPContact
   template <int dim>
   void
   DamageSystem<dim>::distribute_hanging_nodes(
-    TrilinosWrappers::MPI::Vector &owned_vector) const
+    LA::MPI::Vector &owned_vector) const
   {
     if (has_hanging_nodes)
       distribute_constraints(constraints, owned_vector);
@@ -363,8 +363,8 @@ namespace VPContact
 
   template <int dim>
   void
-  DamageSystem<dim>::gather(const TrilinosWrappers::MPI::Vector &full,
-                            TrilinosWrappers::MPI::Vector       &compact) const
+  DamageSystem<dim>::gather(const LA::MPI::Vector &full,
+                            LA::MPI::Vector       &compact) const
   {
     // The local entries of owned vectors, in the order of their index sets
     // (contiguous ranges here): no index lookup per entry.
@@ -378,8 +378,8 @@ namespace VPContact
 
   template <int dim>
   void
-  DamageSystem<dim>::scatter(const TrilinosWrappers::MPI::Vector &compact,
-                             TrilinosWrappers::MPI::Vector       &full) const
+  DamageSystem<dim>::scatter(const LA::MPI::Vector &compact,
+                             LA::MPI::Vector       &full) const
   {
     const double *source      = compact.begin();
     double       *destination = full.begin();
@@ -390,7 +390,7 @@ namespace VPContact
 
 
   template <int dim>
-  TrilinosWrappers::SparseMatrix &
+  LA::SparseMatrix &
   DamageSystem<dim>::matrix()
   {
     return system_matrix;
@@ -439,8 +439,8 @@ namespace VPContact
 
   template <int dim>
   void
-  DamageSystem<dim>::vmult_on_support(TrilinosWrappers::MPI::Vector       &y,
-                                      const TrilinosWrappers::MPI::Vector &x)
+  DamageSystem<dim>::vmult_on_support(LA::MPI::Vector       &y,
+                                      const LA::MPI::Vector &x)
   {
     support_product.vmult(y, x);
   }
@@ -467,10 +467,10 @@ namespace VPContact
 
   template <int dim>
   unsigned int
-  DamageSystem<dim>::solve_obstacle(const TrilinosWrappers::MPI::Vector &b,
-                                    TrilinosWrappers::MPI::Vector       &zeta,
-                                    const double       tolerance,
-                                    const unsigned int max_iterations,
+  DamageSystem<dim>::solve_obstacle(const LA::MPI::Vector &b,
+                                    LA::MPI::Vector       &zeta,
+                                    const double           tolerance,
+                                    const unsigned int     max_iterations,
                                     const unsigned int max_linear_iterations)
   {
     Assert(obstacle_snes, ExcMessage("initialize_preconditioner() first."));
@@ -485,11 +485,11 @@ namespace VPContact
 
   template <int dim>
   unsigned int
-  DamageSystem<dim>::solve(const TrilinosWrappers::MPI::Vector &b,
-                           TrilinosWrappers::MPI::Vector       &x,
-                           const std::vector<unsigned int>     &held,
-                           const double                         tolerance,
-                           const unsigned int                   max_iterations)
+  DamageSystem<dim>::solve(const LA::MPI::Vector           &b,
+                           LA::MPI::Vector                 &x,
+                           const std::vector<unsigned int> &held,
+                           const double                     tolerance,
+                           const unsigned int               max_iterations)
   {
     // The region solver measures |b| on the free nodes itself (b vanishes
     // on the held ones) and returns x = 0 for b = 0.

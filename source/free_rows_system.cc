@@ -1,6 +1,7 @@
 // FreeRowsSystem: the submatrix K_FF of the rows a solve leaves free, taken
 // row by row from K's local matrix, and the vector copies onto it and back.
 #include <vpcontact/free_rows_system.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -20,8 +21,8 @@ namespace VPContact
 
 
   bool
-  FreeRowsSystem::select(const TrilinosWrappers::SparseMatrix &matrix,
-                         const std::vector<unsigned int>      &held)
+  FreeRowsSystem::select(const LA::SparseMatrix          &matrix,
+                         const std::vector<unsigned int> &held)
   {
     const MPI_Comm     communicator = matrix.get_mpi_communicator();
     const unsigned int n_owned      = matrix.local_size();
@@ -88,7 +89,7 @@ namespace VPContact
 
 
   void
-  FreeRowsSystem::extract(const TrilinosWrappers::SparseMatrix &full_matrix)
+  FreeRowsSystem::extract(const LA::SparseMatrix &full_matrix)
   {
     const Epetra_CrsMatrix &matrix = full_matrix.trilinos_matrix();
     // Two passes over the free rows: the number of free columns in each
@@ -139,7 +140,7 @@ namespace VPContact
 
 
 
-  const TrilinosWrappers::SparseMatrix &
+  const LA::SparseMatrix &
   FreeRowsSystem::matrix() const
   {
     return free_matrix;
@@ -148,8 +149,7 @@ namespace VPContact
 
 
   void
-  FreeRowsSystem::reinit_vector(
-    TrilinosWrappers::MPI::Vector &free_vector) const
+  FreeRowsSystem::reinit_vector(LA::MPI::Vector &free_vector) const
   {
     free_vector.reinit(free_rows, free_matrix.get_mpi_communicator());
   }
@@ -157,8 +157,8 @@ namespace VPContact
 
 
   void
-  FreeRowsSystem::restrict_to_free(const TrilinosWrappers::MPI::Vector &full,
-                                   TrilinosWrappers::MPI::Vector &free) const
+  FreeRowsSystem::restrict_to_free(const LA::MPI::Vector &full,
+                                   LA::MPI::Vector       &free) const
   {
     const double *from = full.begin();
     double       *to   = free.begin();
@@ -169,8 +169,8 @@ namespace VPContact
 
 
   void
-  FreeRowsSystem::extend_to_full(const TrilinosWrappers::MPI::Vector &free,
-                                 TrilinosWrappers::MPI::Vector &full) const
+  FreeRowsSystem::extend_to_full(const LA::MPI::Vector &free,
+                                 LA::MPI::Vector       &full) const
   {
     const double *from = free.begin();
     double       *to   = full.begin();

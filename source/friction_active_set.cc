@@ -1,6 +1,7 @@
 // The primal-dual active set for Tresca friction: contact nodes, their
 // stick/slip decisions, and their constraints and forces.
 #include <vpcontact/friction_active_set.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -17,7 +18,7 @@ namespace VPContact
     // The lumped length m_i = int_{Gamma_C} phi_i ds of every contact
     // vertex, at its x-component dof, as a ghosted vector.
     template <int dim>
-    TrilinosWrappers::MPI::Vector
+    LA::MPI::Vector
     lumped_lengths(const DoFHandler<dim>              &dof_handler,
                    const std::set<types::boundary_id> &contact_ids,
                    const IndexSet                     &locally_relevant_dofs)
@@ -33,7 +34,7 @@ namespace VPContact
       // each face), accumulated at the x-component dof of each vertex. The
       // vector can write into ghost entries, which compress() sends to their
       // owners.
-      TrilinosWrappers::MPI::Vector lengths;
+      LA::MPI::Vector lengths;
       lengths.reinit(owned_dofs, locally_relevant_dofs, communicator, true);
       const Quadrature<dim - 1> face_quadrature
         = fe.reference_cell()
@@ -65,9 +66,9 @@ namespace VPContact
                     }
               }
       lengths.compress(VectorOperation::add);
-      TrilinosWrappers::MPI::Vector relevant_lengths(owned_dofs,
-                                                     locally_relevant_dofs,
-                                                     communicator);
+      LA::MPI::Vector relevant_lengths(owned_dofs,
+                                       locally_relevant_dofs,
+                                       communicator);
       relevant_lengths = lengths;
       return relevant_lengths;
     }
@@ -90,7 +91,7 @@ namespace VPContact
       return face->at_boundary() && contact_ids.count(face->boundary_id()) == 1;
     };
 
-    const TrilinosWrappers::MPI::Vector relevant_lengths
+    const LA::MPI::Vector relevant_lengths
       = lumped_lengths(dof_handler, contact_ids, locally_relevant_dofs);
 
     // The nodes, on every cell this rank sees (owned or ghost).
@@ -213,7 +214,7 @@ namespace VPContact
   void
   FrictionActiveSet<dim>::add_slip_forces(
     const AffineConstraints<double> &constraints,
-    TrilinosWrappers::MPI::Vector   &rhs) const
+    LA::MPI::Vector                 &rhs) const
   {
     // At a slip node the residual must be m_i lambda_i with
     // lambda_i = g_i n_i (plus the slip stiffness term, which the matrix
@@ -262,7 +263,7 @@ namespace VPContact
   void
   FrictionActiveSet<dim>::add_slip_stiffness(
     const AffineConstraints<double> &constraints,
-    TrilinosWrappers::SparseMatrix  &matrix)
+    LA::SparseMatrix                &matrix)
   {
     // The constraints carry the node's stiffness over to its free degrees
     // of freedom.
@@ -289,7 +290,7 @@ namespace VPContact
   void
   FrictionActiveSet<dim>::update_slip_stiffness(
     const AffineConstraints<double> &constraints,
-    TrilinosWrappers::SparseMatrix  &matrix)
+    LA::SparseMatrix                &matrix)
   {
     // No set changed, so the constraints are those the matrix was built
     // with, and the new stiffness minus the one the matrix holds is the
@@ -322,11 +323,11 @@ namespace VPContact
 
   template <int dim>
   typename FrictionActiveSet<dim>::Changes
-  FrictionActiveSet<dim>::update(const TrilinosWrappers::MPI::Vector &residual,
-                                 const TrilinosWrappers::MPI::Vector &increment,
-                                 const double youngs_modulus,
-                                 const double c_factor,
-                                 const double direction_tolerance)
+  FrictionActiveSet<dim>::update(const LA::MPI::Vector &residual,
+                                 const LA::MPI::Vector &increment,
+                                 const double           youngs_modulus,
+                                 const double           c_factor,
+                                 const double           direction_tolerance)
   {
     Changes changes;
     for (auto &node : nodes)
@@ -454,9 +455,8 @@ namespace VPContact
 
   template <int dim>
   void
-  FrictionActiveSet<dim>::fill_output(
-    TrilinosWrappers::MPI::Vector &status,
-    TrilinosWrappers::MPI::Vector &traction) const
+  FrictionActiveSet<dim>::fill_output(LA::MPI::Vector &status,
+                                      LA::MPI::Vector &traction) const
   {
     status   = 0.;
     traction = 0.;
@@ -491,8 +491,7 @@ namespace VPContact
 
   template <int dim>
   void
-  FrictionActiveSet<dim>::write_state(
-    TrilinosWrappers::MPI::Vector &state) const
+  FrictionActiveSet<dim>::write_state(LA::MPI::Vector &state) const
   {
     for (const auto &node : nodes)
       if (node.owned)
@@ -508,7 +507,7 @@ namespace VPContact
 
   template <int dim>
   void
-  FrictionActiveSet<dim>::read_state(const TrilinosWrappers::MPI::Vector &state)
+  FrictionActiveSet<dim>::read_state(const LA::MPI::Vector &state)
   {
     for (auto &node : nodes)
       {

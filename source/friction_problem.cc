@@ -1,6 +1,7 @@
 // The Tresca friction problem: contact cells, the active-set update from the
 // residual, statistics and the checkpointed state.
 #include <vpcontact/friction_problem.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -92,7 +93,7 @@ namespace VPContact
   void
   FrictionProblem<dim>::add_slip_forces(
     const AffineConstraints<double> &constraints,
-    TrilinosWrappers::MPI::Vector   &rhs) const
+    LA::MPI::Vector                 &rhs) const
   {
     active_set.add_slip_forces(constraints, rhs);
   }
@@ -103,7 +104,7 @@ namespace VPContact
   void
   FrictionProblem<dim>::add_slip_stiffness(
     const AffineConstraints<double> &constraints,
-    TrilinosWrappers::SparseMatrix  &matrix)
+    LA::SparseMatrix                &matrix)
   {
     active_set.add_slip_stiffness(constraints, matrix);
   }
@@ -114,7 +115,7 @@ namespace VPContact
   void
   FrictionProblem<dim>::update_slip_stiffness(
     const AffineConstraints<double> &constraints,
-    TrilinosWrappers::SparseMatrix  &matrix)
+    LA::SparseMatrix                &matrix)
   {
     active_set.update_slip_stiffness(constraints, matrix);
   }
@@ -123,7 +124,7 @@ namespace VPContact
 
   template <int dim>
   typename FrictionActiveSet<dim>::Changes
-  FrictionProblem<dim>::update(const TrilinosWrappers::MPI::Vector &increment,
+  FrictionProblem<dim>::update(const LA::MPI::Vector   &increment,
                                const double             youngs_modulus,
                                const ResidualAssembler &assemble_residual)
   {
@@ -221,9 +222,8 @@ namespace VPContact
 
   template <int dim>
   void
-  FrictionProblem<dim>::fill_output(
-    TrilinosWrappers::MPI::Vector &status,
-    TrilinosWrappers::MPI::Vector &traction) const
+  FrictionProblem<dim>::fill_output(LA::MPI::Vector &status,
+                                    LA::MPI::Vector &traction) const
   {
     active_set.fill_output(status, traction);
   }
@@ -233,7 +233,7 @@ namespace VPContact
   template <int dim>
   void
   FrictionProblem<dim>::write_checkpoint(
-    TrilinosWrappers::MPI::Vector &state,
+    LA::MPI::Vector               &state,
     std::map<std::string, double> &counters) const
   {
     active_set.write_state(state);
@@ -245,7 +245,7 @@ namespace VPContact
   template <int dim>
   void
   FrictionProblem<dim>::read_checkpoint(
-    const TrilinosWrappers::MPI::Vector              &state,
+    const LA::MPI::Vector                            &state,
     const std::function<double(const std::string &)> &counter)
   {
     active_set.read_state(state);

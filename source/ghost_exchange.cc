@@ -1,6 +1,7 @@
 // GhostExchange: the import of owned entries into a ghosted vector, built
 // once per pair of layouts.
 #include <vpcontact/ghost_exchange.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/lac/exceptions.h>
 
@@ -9,8 +10,7 @@
 namespace VPContact
 {
   void
-  copy_owned_values(const TrilinosWrappers::MPI::Vector &from,
-                    TrilinosWrappers::MPI::Vector       &to)
+  copy_owned_values(const LA::MPI::Vector &from, LA::MPI::Vector &to)
   {
     AssertThrow(from.locally_owned_elements() == to.locally_owned_elements(),
                 ExcMessage("copy_owned_values() needs two vectors with the "
@@ -55,8 +55,7 @@ namespace VPContact
 
 
   void
-  GhostExchange::copy(const TrilinosWrappers::MPI::Vector &owned,
-                      TrilinosWrappers::MPI::Vector       &ghosted)
+  GhostExchange::copy(const LA::MPI::Vector &owned, LA::MPI::Vector &ghosted)
   {
     AssertDimension(owned.size(), ghosted.size());
     const LayoutPair &pair = pair_for(owned.trilinos_vector().Map(),

@@ -1,6 +1,7 @@
 // The section "Solver" entry for the start vector of the displacement
 // solve, and its extrapolation in time.
 #include <vpcontact/increment_predictor.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <algorithm>
 
@@ -47,7 +48,7 @@ namespace VPContact
 
 
   void
-  IncrementPredictor::predict(TrilinosWrappers::MPI::Vector &increment) const
+  IncrementPredictor::predict(LA::MPI::Vector &increment) const
   {
     // The extrapolation weights for equal steps: the polynomial through
     // (n-1, w_{n-1}), (n-2, w_{n-2}), ... evaluated at n.
@@ -67,7 +68,7 @@ namespace VPContact
 
 
   void
-  IncrementPredictor::record(const TrilinosWrappers::MPI::Vector &increment)
+  IncrementPredictor::record(const LA::MPI::Vector &increment)
   {
     if (degree == 0)
       return;
@@ -88,7 +89,7 @@ namespace VPContact
 
 
 
-  TrilinosWrappers::MPI::Vector &
+  LA::MPI::Vector &
   IncrementPredictor::recorded(const unsigned int i)
   {
     return history[i];

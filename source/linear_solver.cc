@@ -1,6 +1,7 @@
 // The section "Solver" and the solution of the displacement system.
 #include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/linear_solver.h>
 
 #include <deal.II/lac/solver_cg.h>
@@ -101,8 +102,8 @@ namespace VPContact
 
 
   void
-  LinearSolver::initialize(const TrilinosWrappers::SparseMatrix &matrix,
-                           const NearNullSpace &near_null_space)
+  LinearSolver::initialize(const LA::SparseMatrix &matrix,
+                           const NearNullSpace    &near_null_space)
   {
     clear();
     solver = create_spd_solver(linear_algebra, method, "Solver/Linear solver");
@@ -137,10 +138,10 @@ namespace VPContact
 
 
   bool
-  LinearSolver::solve_changed_matrix(TrilinosWrappers::MPI::Vector       &x,
-                                     const TrilinosWrappers::MPI::Vector &b,
-                                     const double  tolerance,
-                                     unsigned int &iterations)
+  LinearSolver::solve_changed_matrix(LA::MPI::Vector       &x,
+                                     const LA::MPI::Vector &b,
+                                     const double           tolerance,
+                                     unsigned int          &iterations)
   {
     // The preconditioner or the factors of the matrix as it was, applied by
     // the SpdSolver of either package to Trilinos vectors.
@@ -148,8 +149,7 @@ namespace VPContact
     {
       SpdSolver *solver;
       void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
+      vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const
       {
         solver->precondition(dst, src);
       }
@@ -158,13 +158,13 @@ namespace VPContact
     // preconditioner is cheaper; where the change is large (a slip node's
     // stiffness far above the elastic one) the old one may not converge
     // at all.
-    SolverControl                       control(std::min(max_iterations,
+    SolverControl         control(std::min(max_iterations,
                                    std::max(4 * iterations_before, 50u)),
                           tolerance);
-    const TrilinosWrappers::MPI::Vector start(x);
+    const LA::MPI::Vector start(x);
     try
       {
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        SolverCG<LA::MPI::Vector> cg(control);
         cg.solve(*matrix, x, b, Preconditioner{solver.get()});
         iterations = iterations_after = control.last_step();
         return true;
@@ -180,7 +180,7 @@ namespace VPContact
 
 
   double
-  LinearSolver::checked_norm(const TrilinosWrappers::MPI::Vector &b)
+  LinearSolver::checked_norm(const LA::MPI::Vector &b)
   {
     AssertThrow(all_finite(b, b.get_mpi_communicator()),
                 ExcMessage("The right-hand side of the displacement system "
@@ -192,8 +192,7 @@ namespace VPContact
 
 
   unsigned int
-  LinearSolver::solve(TrilinosWrappers::MPI::Vector       &x,
-                      const TrilinosWrappers::MPI::Vector &b)
+  LinearSolver::solve(LA::MPI::Vector &x, const LA::MPI::Vector &b)
   {
     const double b_norm = checked_norm(b);
     if (b_norm == 0.)
@@ -246,9 +245,9 @@ namespace VPContact
 
 
   std::future<unsigned int>
-  LinearSolver::solve_in_background(TrilinosWrappers::MPI::Vector       &x,
-                                    const TrilinosWrappers::MPI::Vector &b,
-                                    const std::function<void()>         &then)
+  LinearSolver::solve_in_background(LA::MPI::Vector             &x,
+                                    const LA::MPI::Vector       &b,
+                                    const std::function<void()> &then)
   {
     Assert(solves_in_background(), ExcInternalError());
     // What solve() does with a factorization, in the same order: the checks
@@ -280,8 +279,7 @@ namespace VPContact
 
 
   void
-  LinearSolver::precondition(TrilinosWrappers::MPI::Vector       &dst,
-                             const TrilinosWrappers::MPI::Vector &src)
+  LinearSolver::precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src)
   {
     solver->precondition(dst, src);
   }

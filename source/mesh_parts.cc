@@ -1,6 +1,7 @@
 // The connected parts of a distributed mesh, found by union-find on each
 // rank and a label exchange through the ghost layer.
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/mesh_parts.h>
 
 #include <deal.II/base/mpi.h>
@@ -95,8 +96,8 @@ namespace VPContact
     // (Trilinos vectors, as everywhere in the program: deal.II 9.4's own
     // distributed vector hangs on the two ranges of owned dofs of a scene
     // with damage.)
-    TrilinosWrappers::MPI::Vector label(owned, communicator);
-    TrilinosWrappers::MPI::Vector ghosted(owned, relevant, communicator);
+    LA::MPI::Vector label(owned, communicator);
+    LA::MPI::Vector ghosted(owned, relevant, communicator);
     for (const auto dof : owned)
       label(dof) = static_cast<double>(dof);
     std::vector<double> smallest(global.size());

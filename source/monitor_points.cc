@@ -1,6 +1,7 @@
 // The displacement at the monitor points: parsing, locating the points on
 // the distributed mesh, and evaluating the displacement there after a step.
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/monitor_points.h>
 
 #include <deal.II/base/mpi.h>
@@ -122,9 +123,8 @@ namespace VPContact
 
   template <int dim>
   void
-  MonitorPoints<dim>::add_statistics(
-    const TrilinosWrappers::MPI::Vector &solution,
-    Statistics                          &statistics) const
+  MonitorPoints<dim>::add_statistics(const LA::MPI::Vector &solution,
+                                     Statistics            &statistics) const
   {
     if (points.empty())
       return;

@@ -1,5 +1,6 @@
 // distribute_constraints(): AffineConstraints::distribute() on the owned
 // entries in place where the constraints read only those.
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/owned_constraints.h>
 
 #include <deal.II/base/mpi.h>
@@ -8,7 +9,7 @@ namespace VPContact
 {
   void
   distribute_constraints(const AffineConstraints<double> &constraints,
-                         TrilinosWrappers::MPI::Vector   &vector)
+                         LA::MPI::Vector                 &vector)
   {
     Assert(!vector.has_ghost_elements(),
            ExcMessage("distribute_constraints() writes an owned vector."));
@@ -32,7 +33,7 @@ namespace VPContact
 
   void
   distribute_owned_constraints(const AffineConstraints<double> &constraints,
-                               TrilinosWrappers::MPI::Vector   &vector)
+                               LA::MPI::Vector                 &vector)
   {
     const IndexSet owned  = vector.locally_owned_elements();
     double        *values = vector.begin();

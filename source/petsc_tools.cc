@@ -1,5 +1,6 @@
 // PETSc's errors in the program's words, and the copies between the
 // program's Trilinos objects and PETSc's.
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/petsc_tools.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -103,8 +104,8 @@ namespace VPContact
 
 
   Mat
-  copy_to_petsc(const TrilinosWrappers::SparseMatrix &matrix,
-                const unsigned int                    dofs_per_node)
+  copy_to_petsc(const LA::SparseMatrix &matrix,
+                const unsigned int      dofs_per_node)
   {
     // PETSc's CSR preallocation wants each row's columns in ascending
     // global order; Epetra keeps them by local column index.
@@ -156,7 +157,7 @@ namespace VPContact
 
 
   void
-  copy_to_petsc(const TrilinosWrappers::MPI::Vector &from, Vec to)
+  copy_to_petsc(const LA::MPI::Vector &from, Vec to)
   {
     PetscScalar *entries;
     VPContactPetsc(VecGetArray(to, &entries));
@@ -167,7 +168,7 @@ namespace VPContact
 
 
   void
-  copy_from_petsc(Vec from, TrilinosWrappers::MPI::Vector &to)
+  copy_from_petsc(Vec from, LA::MPI::Vector &to)
   {
     const PetscScalar *entries;
     VPContactPetsc(VecGetArrayRead(from, &entries));

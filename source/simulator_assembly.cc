@@ -1,5 +1,6 @@
 // The simulator's assembly: the elastic stiffness matrix (once per mesh) and
 // the right-hand side of a step, which carries the stress history.
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/multithread_info.h>
@@ -57,7 +58,7 @@ namespace VPContact
     add_to_rhs(const CellRhs                   &copy,
                const AffineConstraints<double> &constraints,
                const types::global_dof_index    first_owned,
-               TrilinosWrappers::MPI::Vector   &rhs)
+               LA::MPI::Vector                 &rhs)
     {
       if (copy.plain)
         {
@@ -436,7 +437,7 @@ namespace VPContact
   void
   Simulator<dim>::assemble_residual(
     const std::vector<typename DoFHandler<dim>::active_cell_iterator> &cells,
-    TrilinosWrappers::MPI::Vector &residual) const
+    LA::MPI::Vector &residual) const
   {
     TimerOutput::Scope t(computing_timer, "Assemble residual");
 

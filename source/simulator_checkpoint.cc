@@ -3,6 +3,7 @@
 #include <vpcontact/checkpoint_fields.h>
 #include <vpcontact/exit_agreement.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/distributed/tria.h>
@@ -134,8 +135,7 @@ namespace VPContact
     // damage source at the quadrature points are recomputed by the next
     // assembly, but are stored with the stress: the resumed state is then
     // the same bits as the uninterrupted one.
-    TrilinosWrappers::MPI::Vector sets_owned(locally_owned_dofs,
-                                             mpi_communicator);
+    LA::MPI::Vector sets_owned(locally_owned_dofs, mpi_communicator);
     // Scenes without friction or damage keep their counters at 0.
     std::map<std::string, double> physics_counters{{"max_friction_violation",
                                                     0.},
@@ -145,11 +145,11 @@ namespace VPContact
       friction_problem->write_checkpoint(sets_owned, physics_counters);
     if (damage_problem)
       damage_problem->write_checkpoint(sets_owned, physics_counters);
-    TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
-                                       locally_relevant_dofs,
-                                       mpi_communicator);
+    LA::MPI::Vector sets(locally_owned_dofs,
+                         locally_relevant_dofs,
+                         mpi_communicator);
     sets = sets_owned;
-    std::array<TrilinosWrappers::MPI::Vector, 3> increments;
+    std::array<LA::MPI::Vector, 3> increments;
     for (unsigned int i = 0; i < increments.size(); ++i)
       {
         increments[i].reinit(locally_owned_dofs,
@@ -158,7 +158,7 @@ namespace VPContact
         increments[i]
           = (i == 0 ? increment_owned : increment_predictor.recorded(i));
       }
-    const std::vector<const TrilinosWrappers::MPI::Vector *> vectors
+    const std::vector<const LA::MPI::Vector *> vectors
       = {&solution, &increments[0], &increments[1], &increments[2], &sets};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
     CheckpointFields::save(checkpointed_mesh(triangulation),
@@ -266,8 +266,7 @@ namespace VPContact
                            + " degrees of freedom, this run "
                            + std::to_string(dof_handler.n_dofs()) + "."));
 
-    TrilinosWrappers::MPI::Vector sets_owned(locally_owned_dofs,
-                                             mpi_communicator);
+    LA::MPI::Vector sets_owned(locally_owned_dofs, mpi_communicator);
     read_checkpoint_fields(sets_owned);
 
     // The active sets, and the constraints as the uninterrupted run has
@@ -276,9 +275,9 @@ namespace VPContact
     // the increment g(t_n) - u_n, zero at the end of a step. The explicit
     // step rebuilds them for its own time anyway; the implicit step starts
     // its first Newton correction from them.
-    TrilinosWrappers::MPI::Vector sets(locally_owned_dofs,
-                                       locally_relevant_dofs,
-                                       mpi_communicator);
+    LA::MPI::Vector sets(locally_owned_dofs,
+                         locally_relevant_dofs,
+                         mpi_communicator);
     sets               = sets_owned;
     const auto counter = [&](const std::string &name) {
       return checkpoint_counter(checkpoint, name);
@@ -317,10 +316,9 @@ namespace VPContact
   // @p sets_owned, which the friction and damage problems read.
   template <int dim>
   void
-  Simulator<dim>::read_checkpoint_fields(
-    TrilinosWrappers::MPI::Vector &sets_owned)
+  Simulator<dim>::read_checkpoint_fields(LA::MPI::Vector &sets_owned)
   {
-    const std::vector<TrilinosWrappers::MPI::Vector *> vectors
+    const std::vector<LA::MPI::Vector *> vectors
       = {&solution_owned,
          &increment_owned,
          &increment_predictor.recorded(1),

@@ -3,6 +3,7 @@
 // quadrature point, for laws too fast for the paper's explicit step.
 #include <vpcontact/exit_agreement.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -246,7 +247,7 @@ namespace VPContact
     }
     // The update on all degrees of freedom (the displacement ones lead
     // the local entries), with its constraints.
-    TrilinosWrappers::MPI::Vector update(increment_owned);
+    LA::MPI::Vector update(increment_owned);
     update = 0.;
     std::copy(newton_update.begin(), newton_update.end(), update.begin());
     constraints.distribute(update);
@@ -255,9 +256,9 @@ namespace VPContact
     ghosts.copy(increment_owned, increment);
     if (iteration == 1 && boundary_conditions.has_prescribed_displacement())
       {
-        TrilinosWrappers::MPI::Vector total(solution_owned);
+        LA::MPI::Vector total(solution_owned);
         total += increment_owned;
-        TrilinosWrappers::MPI::Vector total_relevant(solution);
+        LA::MPI::Vector total_relevant(solution);
         total_relevant = total;
         make_constraints(time, &total_relevant);
       }

@@ -1,6 +1,7 @@
 // The simulator's output: cell-averaged stresses, the statistics row of every
 // step, the screen, and the fields for ParaView.
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/simulator.h>
 #include <vpcontact/stress_measures.h>
 
@@ -132,12 +133,12 @@ namespace VPContact
     template <int dim>
     struct FieldSources
     {
-      PatchDataOut<dim>                  data_out;
-      TrilinosWrappers::MPI::BlockVector solution, status, traction;
-      ContactStatusField<dim>            status_field;
-      TractionField<dim>                 traction_field;
-      Vector<double>                     von_mises, subdomain;
-      std::vector<Vector<double>>        components;
+      PatchDataOut<dim>           data_out;
+      LA::MPI::BlockVector        solution, status, traction;
+      ContactStatusField<dim>     status_field;
+      TractionField<dim>          traction_field;
+      Vector<double>              von_mises, subdomain;
+      std::vector<Vector<double>> components;
     };
 
 
@@ -171,12 +172,12 @@ namespace VPContact
     // DataOut needs to build its own ghosted vector from it on several
     // ranks.
     template <int dim>
-    TrilinosWrappers::MPI::BlockVector
-    block_copy(const TrilinosWrappers::MPI::Vector &owned,
-               const IndexSet                      &owned_dofs,
-               const IndexSet                      &relevant_dofs,
-               const types::global_dof_index        n_u,
-               const MPI_Comm                       communicator)
+    LA::MPI::BlockVector
+    block_copy(const LA::MPI::Vector        &owned,
+               const IndexSet               &owned_dofs,
+               const IndexSet               &relevant_dofs,
+               const types::global_dof_index n_u,
+               const MPI_Comm                communicator)
     {
       const types::global_dof_index n = owned_dofs.size();
       std::vector<IndexSet>         owned_blocks{owned_dofs.get_view(0, n_u)};
@@ -186,8 +187,8 @@ namespace VPContact
           owned_blocks.push_back(owned_dofs.get_view(n_u, n));
           relevant_blocks.push_back(relevant_dofs.get_view(n_u, n));
         }
-      TrilinosWrappers::MPI::BlockVector blocks(owned_blocks, communicator);
-      const double                      *entry = owned.begin();
+      LA::MPI::BlockVector blocks(owned_blocks, communicator);
+      const double        *entry = owned.begin();
       for (unsigned int b = 0; b < blocks.n_blocks(); ++b)
         {
           std::copy_n(entry,
@@ -195,9 +196,7 @@ namespace VPContact
                       blocks.block(b).begin());
           entry += blocks.block(b).locally_owned_size();
         }
-      TrilinosWrappers::MPI::BlockVector ghosted(owned_blocks,
-                                                 relevant_blocks,
-                                                 communicator);
+      LA::MPI::BlockVector ghosted(owned_blocks, relevant_blocks, communicator);
       ghosted = blocks;
       return ghosted;
     }
@@ -478,7 +477,7 @@ namespace VPContact
           DataComponentInterpretation::component_is_scalar);
       }
     data_out.attach_dof_handler(dof_handler);
-    const auto blocks = [&](const TrilinosWrappers::MPI::Vector &owned) {
+    const auto blocks = [&](const LA::MPI::Vector &owned) {
       return block_copy<dim>(owned,
                              locally_owned_dofs,
                              locally_relevant_dofs,
@@ -494,8 +493,8 @@ namespace VPContact
     // Contact nodes: status (0 none, 1 stick, 2 slip), traction sigma_tau.
     if (friction_problem)
       {
-        TrilinosWrappers::MPI::Vector status(solution_owned);
-        TrilinosWrappers::MPI::Vector traction(solution_owned);
+        LA::MPI::Vector status(solution_owned);
+        LA::MPI::Vector traction(solution_owned);
         friction_problem->fill_output(status, traction);
         sources->status   = blocks(status);
         sources->traction = blocks(traction);

@@ -1,5 +1,6 @@
 // The simulator's mesh, degrees of freedom, constraints and sparsity.
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/rigid_motions.h>
 #include <vpcontact/simulator.h>
 
@@ -147,10 +148,10 @@ namespace VPContact
   {
     // The sparsity pattern of the displacement block: Trilinos sends the
     // entries of rows that other ranks own to them (as in step-32).
-    TrilinosWrappers::SparsityPattern    sparsity(displacement.owned,
-                                               displacement.owned,
-                                               displacement.relevant,
-                                               mpi_communicator);
+    LA::SparsityPattern                  sparsity(displacement.owned,
+                                 displacement.owned,
+                                 displacement.relevant,
+                                 mpi_communicator);
     std::vector<types::global_dof_index> u_indices;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -167,9 +168,8 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::make_constraints(
-    const double                         time,
-    const TrilinosWrappers::MPI::Vector *previous)
+  Simulator<dim>::make_constraints(const double           time,
+                                   const LA::MPI::Vector *previous)
   {
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
@@ -219,8 +219,7 @@ namespace VPContact
       = GridTools::compute_bounding_box(triangulation).center();
     const unsigned int n_modes = (dim == 2 ? 3 : 6);
     space.modes.assign(n_modes,
-                       TrilinosWrappers::MPI::Vector(displacement.owned,
-                                                     mpi_communicator));
+                       LA::MPI::Vector(displacement.owned, mpi_communicator));
     for (unsigned int d = 0; d < dim; ++d)
       {
         ComponentMask mask(fe.n_components(), false);

@@ -3,6 +3,7 @@
 // (beside the damage step where the factors allow), and the solve floor.
 #include <vpcontact/finite_values.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/owned_constraints.h>
 #include <vpcontact/simulator.h>
 
@@ -231,7 +232,7 @@ namespace VPContact
     // The floor of a time step: one solve of the displacement system with
     // everything reused (matrix and preconditioner as they are, the last
     // right-hand side), from a zero start vector.
-    TrilinosWrappers::MPI::Vector x(displacement.increment);
+    LA::MPI::Vector x(displacement.increment);
     x = 0.;
     Timer              timer;
     const unsigned int iterations
@@ -240,8 +241,8 @@ namespace VPContact
 
     // Its two kernels, each timed over ten applications: they tell how the
     // solve scales with the ranks (scripts/bench compares them).
-    TrilinosWrappers::MPI::Vector y(x);
-    Timer                         matvec_timer;
+    LA::MPI::Vector y(x);
+    Timer           matvec_timer;
     for (unsigned int i = 0; i < 10; ++i)
       displacement.matrix.vmult(y, x);
     matvec_timer.stop();

@@ -1,6 +1,7 @@
 // The CHOLMOD factorization of the displacement matrix on one process, and
 // the solves with it.
 #include <vpcontact/blas_threads.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/sparse_cholesky.h>
 
 #include <deal.II/base/exceptions.h>
@@ -118,7 +119,7 @@ namespace VPContact
 
 
   void
-  SparseCholesky::factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  SparseCholesky::factorize(const LA::SparseMatrix &matrix)
   {
     release();
     const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
@@ -164,8 +165,7 @@ namespace VPContact
 
 
   void
-  SparseCholesky::solve(TrilinosWrappers::MPI::Vector       &dst,
-                        const TrilinosWrappers::MPI::Vector &src) const
+  SparseCholesky::solve(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const
   {
     Assert(factor != nullptr, ExcMessage("factorize() first"));
     const long n = static_cast<long>(factor->n);

@@ -1,5 +1,6 @@
 // The SpdSolver of Solver/Linear solver = Cholesky: the supernodal
 // factorization of SparseCholesky, for either linear algebra package.
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/sparse_cholesky.h>
 #include <vpcontact/spd_solver.h>
 
@@ -16,15 +17,14 @@ namespace VPContact
     {
     public:
       void
-      initialize(const TrilinosWrappers::SparseMatrix &matrix,
-                 const NearNullSpace &) override
+      initialize(const LA::SparseMatrix &matrix, const NearNullSpace &) override
       {
         factors.factorize(matrix);
       }
 
       unsigned int
-      solve(TrilinosWrappers::MPI::Vector       &x,
-            const TrilinosWrappers::MPI::Vector &b,
+      solve(LA::MPI::Vector       &x,
+            const LA::MPI::Vector &b,
             SolverControl &,
             const std::vector<unsigned int> &held) override
       {
@@ -35,8 +35,7 @@ namespace VPContact
       }
 
       void
-      precondition(TrilinosWrappers::MPI::Vector       &dst,
-                   const TrilinosWrappers::MPI::Vector &src) override
+      precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src) override
       {
         factors.solve(dst, src);
       }

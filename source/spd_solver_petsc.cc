@@ -2,6 +2,7 @@
 // AIJ matrix, PETSc's CG with GAMG or block Jacobi / ICC, or the Cholesky
 // factorization of MUMPS through PETSc.
 #include <vpcontact/blas_threads.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/petsc_tools.h>
 #include <vpcontact/spd_solver.h>
 
@@ -36,8 +37,8 @@ namespace VPContact
       }
 
       void
-      initialize(const TrilinosWrappers::SparseMatrix &matrix,
-                 const NearNullSpace                  &near_null_space) override
+      initialize(const LA::SparseMatrix &matrix,
+                 const NearNullSpace    &near_null_space) override
       {
         release();
         communicator = matrix.get_mpi_communicator();
@@ -80,10 +81,10 @@ namespace VPContact
       }
 
       unsigned int
-      solve(TrilinosWrappers::MPI::Vector       &solution,
-            const TrilinosWrappers::MPI::Vector &rhs,
-            SolverControl                       &control,
-            const std::vector<unsigned int>     &held_rows) override
+      solve(LA::MPI::Vector                 &solution,
+            const LA::MPI::Vector           &rhs,
+            SolverControl                   &control,
+            const std::vector<unsigned int> &held_rows) override
       {
         // Whether rows are held is decided over all ranks: the solve on the
         // free rows and the solve with all rows call different collective
@@ -110,8 +111,7 @@ namespace VPContact
       }
 
       void
-      precondition(TrilinosWrappers::MPI::Vector       &dst,
-                   const TrilinosWrappers::MPI::Vector &src) override
+      precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src) override
       {
         copy_to_petsc(src, b);
         PC pc;
@@ -136,10 +136,10 @@ namespace VPContact
        * the damaged zone, a solve costs in proportion to the free rows.
        */
       unsigned int
-      solve_on_free_rows(TrilinosWrappers::MPI::Vector       &solution,
-                         const TrilinosWrappers::MPI::Vector &rhs,
-                         SolverControl                       &control,
-                         const std::vector<unsigned int>     &held_rows)
+      solve_on_free_rows(LA::MPI::Vector                 &solution,
+                         const LA::MPI::Vector           &rhs,
+                         SolverControl                   &control,
+                         const std::vector<unsigned int> &held_rows)
       {
         select_free_rows(held_rows);
         VPContactPetsc(KSPSetTolerances(free_ksp,

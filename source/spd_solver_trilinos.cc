@@ -2,6 +2,7 @@
 // preconditioners, and Amesos factorizations.
 #include <vpcontact/free_rows_system.h>
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/spd_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -30,8 +31,7 @@ namespace VPContact
       const std::vector<unsigned int> &held;
 
       void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
+      vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const
       {
         apply(dst, src);
         double *d = dst.begin();
@@ -57,8 +57,8 @@ namespace VPContact
       {}
 
       void
-      initialize(const TrilinosWrappers::SparseMatrix &matrix,
-                 const NearNullSpace                  &near_null_space) override
+      initialize(const LA::SparseMatrix &matrix,
+                 const NearNullSpace    &near_null_space) override
       {
         this->matrix = &matrix;
         preconditioner.reset();
@@ -84,10 +84,10 @@ namespace VPContact
       }
 
       unsigned int
-      solve(TrilinosWrappers::MPI::Vector       &x,
-            const TrilinosWrappers::MPI::Vector &b,
-            SolverControl                       &control,
-            const std::vector<unsigned int>     &held) override
+      solve(LA::MPI::Vector                 &x,
+            const LA::MPI::Vector           &b,
+            SolverControl                   &control,
+            const std::vector<unsigned int> &held) override
       {
         if (is_direct())
           {
@@ -98,7 +98,7 @@ namespace VPContact
         // The branch is taken alike on all ranks (a rank may hold none of
         // its rows while another holds some): both call the same collective
         // operations today, but only a common decision keeps it so.
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        SolverCG<LA::MPI::Vector> cg(control);
         if (!Utilities::MPI::logical_or(!held.empty(),
                                         matrix->get_mpi_communicator()))
           cg.solve(*matrix, x, b, *preconditioner);
@@ -117,8 +117,7 @@ namespace VPContact
       }
 
       void
-      precondition(TrilinosWrappers::MPI::Vector       &dst,
-                   const TrilinosWrappers::MPI::Vector &src) override
+      precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src) override
       {
         if (preconditioner)
           preconditioner->vmult(dst, src);
@@ -140,10 +139,10 @@ namespace VPContact
        * the damage solves of a step change it at first and then confirm it.
        */
       void
-      solve_on_free_rows(TrilinosWrappers::MPI::Vector           &x,
-                         const TrilinosWrappers::MPI::Vector     &b,
-                         SolverCG<TrilinosWrappers::MPI::Vector> &cg,
-                         const std::vector<unsigned int>         &held)
+      solve_on_free_rows(LA::MPI::Vector                 &x,
+                         const LA::MPI::Vector           &b,
+                         SolverCG<LA::MPI::Vector>       &cg,
+                         const std::vector<unsigned int> &held)
       {
         if (free_rows.select(*matrix, held))
           {
@@ -165,8 +164,8 @@ namespace VPContact
        * rotation, and CG needs more iterations the finer the mesh.
        */
       void
-      initialize_amg(const TrilinosWrappers::SparseMatrix &matrix,
-                     const NearNullSpace                  &near_null_space)
+      initialize_amg(const LA::SparseMatrix &matrix,
+                     const NearNullSpace    &near_null_space)
       {
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic              = true;
@@ -203,14 +202,14 @@ namespace VPContact
       }
 
       const SpdMethod                                     method;
-      const TrilinosWrappers::SparseMatrix               *matrix = nullptr;
+      const LA::SparseMatrix                             *matrix = nullptr;
       std::unique_ptr<Epetra_MultiVector>                 null_space;
       std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
       SolverControl                                       direct_control;
       std::unique_ptr<TrilinosWrappers::SolverDirect>     direct;
       FreeRowsSystem                                      free_rows;
       TrilinosWrappers::PreconditionIC                    free_preconditioner;
-      TrilinosWrappers::MPI::Vector                       x_free, b_free;
+      LA::MPI::Vector                                     x_free, b_free;
     };
   } // namespace
 

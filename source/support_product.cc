@@ -1,4 +1,5 @@
 // SupportProduct: K x summed over the nonzero entries of x.
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/support_product.h>
 
 #include <deal.II/base/exceptions.h>
@@ -7,8 +8,7 @@
 namespace VPContact
 {
   IndexSet
-  columns_of_owned_rows(const TrilinosWrappers::SparseMatrix &matrix,
-                        const IndexSet                       &owned)
+  columns_of_owned_rows(const LA::SparseMatrix &matrix, const IndexSet &owned)
   {
     const Epetra_BlockMap &column_map = matrix.trilinos_matrix().ColMap();
     IndexSet               columns(owned);
@@ -21,8 +21,8 @@ namespace VPContact
 
 
   std::vector<unsigned int>
-  ghosted_positions_of_columns(const TrilinosWrappers::SparseMatrix &matrix,
-                               const Epetra_BlockMap &ghosted_map)
+  ghosted_positions_of_columns(const LA::SparseMatrix &matrix,
+                               const Epetra_BlockMap  &ghosted_map)
   {
     const Epetra_BlockMap    &column_map = matrix.trilinos_matrix().ColMap();
     std::vector<unsigned int> positions(column_map.NumMyElements());
@@ -39,14 +39,14 @@ namespace VPContact
 
 
   void
-  SupportProduct::initialize(const TrilinosWrappers::SparseMatrix &matrix,
-                             const IndexSet                       &owned,
-                             const MPI_Comm                        communicator)
+  SupportProduct::initialize(const LA::SparseMatrix &matrix,
+                             const IndexSet         &owned,
+                             const MPI_Comm          communicator)
   {
     serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
     x_ghosted.reinit(owned, columns_of_owned_rows(matrix, owned), communicator);
     const Epetra_BlockMap &ghosted_map = x_ghosted.trilinos_vector().Map();
-    TrilinosWrappers::MPI::Vector owned_vector(owned, communicator);
+    LA::MPI::Vector        owned_vector(owned, communicator);
     importer
       = std::make_unique<Epetra_Import>(ghosted_map,
                                         owned_vector.trilinos_vector().Map());
@@ -96,8 +96,7 @@ namespace VPContact
 
 
   void
-  SupportProduct::vmult(TrilinosWrappers::MPI::Vector       &y,
-                        const TrilinosWrappers::MPI::Vector &x)
+  SupportProduct::vmult(LA::MPI::Vector &y, const LA::MPI::Vector &x)
   {
     // Rows are owned positions (the row map of the matrix lists the owned
     // indices in ascending order, as the owned vectors do).

@@ -1,5 +1,6 @@
 // Errors against a closed-form displacement (section "Verification").
 #include <vpcontact/input_error.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/parsed_function.h>
 #include <vpcontact/verification.h>
 
@@ -135,9 +136,9 @@ namespace VPContact
   template <int dim>
   double
   Verification<dim>::damage_error(const DoFHandler<dim> &dof_handler,
-                                  const TrilinosWrappers::MPI::Vector &solution,
-                                  const IndexSet &damage_dofs,
-                                  const double    time)
+                                  const LA::MPI::Vector &solution,
+                                  const IndexSet        &damage_dofs,
+                                  const double           time)
   {
     exact_damage->set_time(time);
     const VectorFunctionFromScalarFunctionObject<dim> exact(
@@ -146,8 +147,8 @@ namespace VPContact
       n_fe_components);
     ComponentMask mask(n_fe_components, false);
     mask.set(dim, true);
-    TrilinosWrappers::MPI::Vector nodal(dof_handler.locally_owned_dofs(),
-                                        solution.get_mpi_communicator());
+    LA::MPI::Vector nodal(dof_handler.locally_owned_dofs(),
+                          solution.get_mpi_communicator());
     VectorTools::interpolate(dof_handler, exact, nodal, mask);
     double error = 0;
     for (const auto dof : damage_dofs)
@@ -198,18 +199,17 @@ namespace VPContact
 
   template <int dim>
   typename Verification<dim>::Errors
-  Verification<dim>::compute_errors(
-    const DoFHandler<dim>               &dof_handler,
-    const TrilinosWrappers::MPI::Vector &solution,
-    const double                         time,
-    const double                         u_max)
+  Verification<dim>::compute_errors(const DoFHandler<dim> &dof_handler,
+                                    const LA::MPI::Vector &solution,
+                                    const double           time,
+                                    const double           u_max)
   {
     Assert(is_active(), ExcInternalError());
     exact_displacement->set_time(time);
 
-    Errors                        errors;
-    TrilinosWrappers::MPI::Vector nodal(dof_handler.locally_owned_dofs(),
-                                        solution.get_mpi_communicator());
+    Errors          errors;
+    LA::MPI::Vector nodal(dof_handler.locally_owned_dofs(),
+                          solution.get_mpi_communicator());
     // The exact displacement on all components of the element (the damage
     // component, if any, gets 0 and is left out of the errors).
     const DisplacementFunction<dim>    padded(*exact_displacement,
@@ -218,7 +218,7 @@ namespace VPContact
                                                                         dim),
                                                          n_fe_components);
     VectorTools::interpolate(dof_handler, padded, nodal);
-    TrilinosWrappers::MPI::Vector owned(nodal);
+    LA::MPI::Vector owned(nodal);
     owned = solution; // imports the locally owned part of the ghosted vector
     nodal -= owned;
     if (n_fe_components > dim) // the damage entries are not displacement

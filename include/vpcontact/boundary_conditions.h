@@ -3,6 +3,8 @@
 #ifndef vpcontact_boundary_conditions_h
 #define vpcontact_boundary_conditions_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
@@ -62,11 +64,10 @@ namespace VPContact
      * stands for zero); all other constraints are homogeneous.
      */
     void
-    make_constraints(
-      const DoFHandler<dim>               &dof_handler,
-      AffineConstraints<double>           &constraints,
-      const double                         time,
-      const TrilinosWrappers::MPI::Vector *previous_displacement) const;
+    make_constraints(const DoFHandler<dim>     &dof_handler,
+                     AffineConstraints<double> &constraints,
+                     const double               time,
+                     const LA::MPI::Vector     *previous_displacement) const;
 
     /// Whether the constraints change with time (prescribed displacements).
     bool

@@ -5,6 +5,8 @@
 #ifndef vpcontact_cell_kinematics_h
 #define vpcontact_cell_kinematics_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
@@ -58,9 +60,9 @@ namespace VPContact
      * ghost entries.
      */
     void
-    reinit(const DoFHandler<dim>               &dof_handler,
-           const Quadrature<dim>               &quadrature,
-           const TrilinosWrappers::MPI::Vector &ghosted);
+    reinit(const DoFHandler<dim> &dof_handler,
+           const Quadrature<dim> &quadrature,
+           const LA::MPI::Vector &ghosted);
 
     /// The number of nodes (scalar shape functions) of a cell.
     unsigned int
@@ -86,7 +88,7 @@ namespace VPContact
      * checked here once per pass rather than once per cell.
      */
     const double *
-    local_entries(const TrilinosWrappers::MPI::Vector &vector) const;
+    local_entries(const LA::MPI::Vector &vector) const;
 
     /// The strain of the displacement of @p entries at the points of @p cell.
     void

@@ -3,6 +3,7 @@
 #ifndef vpcontact_checkpoint_fields_h
 #define vpcontact_checkpoint_fields_h
 
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/quadrature_history.h>
 
 #include <deal.II/distributed/tria.h>
@@ -49,12 +50,12 @@ namespace VPContact
      */
     template <int dim>
     void
-    save(parallel::distributed::Triangulation<dim> &triangulation,
-         const DoFHandler<dim>                     &dof_handler,
-         const std::vector<const TrilinosWrappers::MPI::Vector *> &vectors,
-         const StressHistory<dim>                                 &history,
-         const unsigned int                                        n_q_points,
-         const std::string                                        &filename);
+    save(parallel::distributed::Triangulation<dim>  &triangulation,
+         const DoFHandler<dim>                      &dof_handler,
+         const std::vector<const LA::MPI::Vector *> &vectors,
+         const StressHistory<dim>                   &history,
+         const unsigned int                          n_q_points,
+         const std::string                          &filename);
 
     /**
      * After triangulation.load() and the setup of @p dof_handler: fill the
@@ -64,11 +65,11 @@ namespace VPContact
      */
     template <int dim>
     void
-    load(parallel::distributed::Triangulation<dim>          &triangulation,
-         const DoFHandler<dim>                              &dof_handler,
-         const std::vector<TrilinosWrappers::MPI::Vector *> &vectors,
-         StressHistory<dim>                                 &history,
-         const unsigned int                                  n_q_points);
+    load(parallel::distributed::Triangulation<dim> &triangulation,
+         const DoFHandler<dim>                     &dof_handler,
+         const std::vector<LA::MPI::Vector *>      &vectors,
+         StressHistory<dim>                        &history,
+         const unsigned int                         n_q_points);
 
     /**
      * The sizes [bytes] of the files that save() meant to write under the

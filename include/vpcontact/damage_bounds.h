@@ -3,6 +3,8 @@
 #ifndef vpcontact_damage_bounds_h
 #define vpcontact_damage_bounds_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -60,10 +62,10 @@ namespace VPContact
      * All nodes start free.
      */
     void
-    setup(const IndexSet                      &damage_dofs,
-          const IndexSet                      &locally_owned_dofs,
-          const TrilinosWrappers::MPI::Vector &lumped_mass,
-          const MPI_Comm                       communicator);
+    setup(const IndexSet        &damage_dofs,
+          const IndexSet        &locally_owned_dofs,
+          const LA::MPI::Vector &lumped_mass,
+          const MPI_Comm         communicator);
 
     /**
      * The owned nodes of the active sets with the change of the damage that
@@ -74,9 +76,9 @@ namespace VPContact
      * vectors hold the owned entries.
      */
     void
-    held_changes(const TrilinosWrappers::MPI::Vector &old_damage,
-                 std::vector<unsigned int>           &held,
-                 TrilinosWrappers::MPI::Vector       &change) const;
+    held_changes(const LA::MPI::Vector     &old_damage,
+                 std::vector<unsigned int> &held,
+                 LA::MPI::Vector           &change) const;
 
     /**
      * The scale c_i of the complementarity test of update(): the ghosted
@@ -86,7 +88,7 @@ namespace VPContact
      * then trade nodes between iterations instead of settling.
      */
     void
-    set_complementarity_scale(const TrilinosWrappers::MPI::Vector &diagonal);
+    set_complementarity_scale(const LA::MPI::Vector &diagonal);
 
     /**
      * The next sets from the ghosted @p residual and @p damage (laid out
@@ -97,9 +99,9 @@ namespace VPContact
      * changed set, on all ranks.
      */
     unsigned int
-    update(const TrilinosWrappers::MPI::Vector &residual,
-           const TrilinosWrappers::MPI::Vector &damage,
-           const double                         time_step);
+    update(const LA::MPI::Vector &residual,
+           const LA::MPI::Vector &damage,
+           const double           time_step);
 
     /**
      * The motion of the front of the upper set (ζ = 1) over a step, in
@@ -110,7 +112,7 @@ namespace VPContact
      * set since, divided by that front size.
      */
     void
-    begin_step(const TrilinosWrappers::SparseMatrix &matrix);
+    begin_step(const LA::SparseMatrix &matrix);
 
     double
     rings_moved() const;
@@ -129,8 +131,8 @@ namespace VPContact
      * exact solve as always.
      */
     unsigned int
-    free_ahead_of_front(const TrilinosWrappers::SparseMatrix &matrix,
-                        const unsigned int                    rings);
+    free_ahead_of_front(const LA::SparseMatrix &matrix,
+                        const unsigned int      rings);
 
     /// The sets of all nodes, to go back to with restore_sets().
     const std::vector<BoundStatus> &
@@ -147,12 +149,12 @@ namespace VPContact
     /// For checkpoints: write the set of every owned node (-1 lower, 0
     /// free, 1 upper) into its entry of @p state (a vector on all dofs).
     void
-    write_state(TrilinosWrappers::MPI::Vector &state) const;
+    write_state(LA::MPI::Vector &state) const;
 
     /// The inverse of write_state(), from a ghosted @p state, for every
     /// relevant node. Throws if a value is not a set.
     void
-    read_state(const TrilinosWrappers::MPI::Vector &state);
+    read_state(const LA::MPI::Vector &state);
 
   private:
     std::vector<types::global_dof_index> dofs;
@@ -173,16 +175,16 @@ namespace VPContact
     /// The owned upper nodes with a neighbour below 1 (see
     /// front_by_product() and front_by_graph()).
     std::vector<unsigned int>
-    front(const TrilinosWrappers::SparseMatrix &matrix);
+    front(const LA::SparseMatrix &matrix);
 
     /// front() on several ranks: one matrix-vector product with @p matrix.
     std::vector<unsigned int>
-    front_by_product(const TrilinosWrappers::SparseMatrix &matrix) const;
+    front_by_product(const LA::SparseMatrix &matrix) const;
 
     /// front() on one rank: a pass over the rows of the upper nodes of
     /// the graph of @p matrix (kept from the first call after setup()).
     std::vector<unsigned int>
-    front_by_graph(const TrilinosWrappers::SparseMatrix &matrix);
+    front_by_graph(const LA::SparseMatrix &matrix);
 
     /// On one rank: the upper nodes next to the nodes of @p ring, which
     /// are free; they are freed too.
@@ -191,8 +193,8 @@ namespace VPContact
 
     /// The marks of front_by_product() and their product with the matrix,
     /// kept.
-    mutable TrilinosWrappers::MPI::Vector front_marks;
-    mutable TrilinosWrappers::MPI::Vector front_reach;
+    mutable LA::MPI::Vector front_marks;
+    mutable LA::MPI::Vector front_reach;
     /// One rank: the neighbours of each node in the matrix graph (entries
     /// that are not zero, the node itself left out), in CSR over the nodes.
     std::vector<unsigned int> neighbour_start;

@@ -4,6 +4,8 @@
 #ifndef vpcontact_damage_obstacle_snes_h
 #define vpcontact_damage_obstacle_snes_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -33,7 +35,7 @@ namespace VPContact
     /// Copy K (which changes with the mesh and the time step only) and set
     /// up the Newton method around it.
     void
-    initialize(const TrilinosWrappers::SparseMatrix &matrix);
+    initialize(const LA::SparseMatrix &matrix);
 
     /**
      * Solve from the start vector @p zeta (zeta_{n-1}), which gets the
@@ -43,11 +45,11 @@ namespace VPContact
      * throws a message naming the parameters after @p max_iterations.
      */
     unsigned int
-    solve(const TrilinosWrappers::MPI::Vector &b,
-          TrilinosWrappers::MPI::Vector       &zeta,
-          const double                         tolerance,
-          const unsigned int                   max_iterations,
-          const unsigned int                   max_linear_iterations);
+    solve(const LA::MPI::Vector &b,
+          LA::MPI::Vector       &zeta,
+          const double           tolerance,
+          const unsigned int     max_iterations,
+          const unsigned int     max_linear_iterations);
 
   private:
     /// F(z) = K z - b.

@@ -8,6 +8,7 @@
 #include <vpcontact/damage_model.h>
 #include <vpcontact/damage_system.h>
 #include <vpcontact/ghost_exchange.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/linear_solver.h>
 #include <vpcontact/quadrature_history.h>
 #include <vpcontact/statistics.h>
@@ -69,11 +70,11 @@ namespace VPContact
      * (the rule of the stress history) must outlive the next setup().
      */
     void
-    setup(const DoFHandler<dim>         &dof_handler,
-          const Quadrature<dim>         &quadrature,
-          const IndexSet                &locally_owned_dofs,
-          const IndexSet                &locally_relevant_dofs,
-          TrilinosWrappers::MPI::Vector &solution_owned);
+    setup(const DoFHandler<dim> &dof_handler,
+          const Quadrature<dim> &quadrature,
+          const IndexSet        &locally_owned_dofs,
+          const IndexSet        &locally_relevant_dofs,
+          LA::MPI::Vector       &solution_owned);
 
     /**
      * Step 4 of step @p n: zeta_n from zeta_{n-1} (the damage block of
@@ -81,14 +82,14 @@ namespace VPContact
      * zeta_n stays here until store().
      */
     void
-    solve(const unsigned int                   n,
-          const TrilinosWrappers::MPI::Vector &solution_owned,
-          const StressHistory<dim>            &history);
+    solve(const unsigned int        n,
+          const LA::MPI::Vector    &solution_owned,
+          const StressHistory<dim> &history);
 
     /// zeta_n clipped onto [0, 1] (by the solver tolerance) into the
     /// damage block of @p solution_owned.
     void
-    store(const unsigned int n, TrilinosWrappers::MPI::Vector &solution_owned);
+    store(const unsigned int n, LA::MPI::Vector &solution_owned);
 
     /**
      * The step's damage columns of @p statistics and its part of the screen
@@ -110,12 +111,12 @@ namespace VPContact
     /// The active sets into the damage entries of @p sets_owned (on all
     /// degrees of freedom), and the counters a resumed run needs.
     void
-    write_checkpoint(TrilinosWrappers::MPI::Vector &sets_owned,
+    write_checkpoint(LA::MPI::Vector               &sets_owned,
                      std::map<std::string, double> &counters) const;
 
     /// The state write_checkpoint() saved; @p counter reads a counter.
     void
-    read_checkpoint(const TrilinosWrappers::MPI::Vector &sets_owned,
+    read_checkpoint(const LA::MPI::Vector &sets_owned,
                     const std::function<double(const std::string &)> &counter);
 
   private:
@@ -127,9 +128,9 @@ namespace VPContact
                     const std::vector<types::global_dof_index> &dof_indices,
                     const Vector<double>                       &cell_mass);
     void
-    interpolate_initial_damage(TrilinosWrappers::MPI::Vector &solution_owned);
+    interpolate_initial_damage(LA::MPI::Vector &solution_owned);
     std::pair<double, double>
-    range(const TrilinosWrappers::MPI::Vector &v) const;
+    range(const LA::MPI::Vector &v) const;
     void
     assemble_matrix();
     void
@@ -139,10 +140,9 @@ namespace VPContact
     void
     solve_by_active_set(const unsigned int n);
     bool
-    find_sets_fast(const TrilinosWrappers::MPI::Vector &step_rhs);
+    find_sets_fast(const LA::MPI::Vector &step_rhs);
     unsigned int
-    solve_with_sets(const TrilinosWrappers::MPI::Vector &step_rhs,
-                    const double                         tolerance);
+    solve_with_sets(const LA::MPI::Vector &step_rhs, const double tolerance);
 
     const DamageModel<dim>   &model;
     const TimeDiscretization &time;
@@ -159,26 +159,26 @@ namespace VPContact
     DamageSystem<dim> system;
     DamageBounds      bounds;
     /// zeta_{n-1} and zeta (owned), and a ghosted copy of zeta.
-    TrilinosWrappers::MPI::Vector old_damage;
-    TrilinosWrappers::MPI::Vector damage_owned;
-    TrilinosWrappers::MPI::Vector damage;
+    LA::MPI::Vector old_damage;
+    LA::MPI::Vector damage_owned;
+    LA::MPI::Vector damage;
     /// zeta - zeta_{n-1}, the unknown of the solves, and their right-hand
     /// side (owned).
-    TrilinosWrappers::MPI::Vector change;
-    TrilinosWrappers::MPI::Vector solve_rhs;
+    LA::MPI::Vector change;
+    LA::MPI::Vector solve_rhs;
     /// The nodes held in a solve (owned positions) and the change that puts
     /// the nodes at a bound there (owned): members, since a fresh vector of
     /// the size of the mesh in every solve costs its page faults.
-    std::vector<unsigned int>     held;
-    TrilinosWrappers::MPI::Vector bound_change;
+    std::vector<unsigned int> held;
+    LA::MPI::Vector           bound_change;
     /// b = M_L zeta_{n-1}/k + (phi_{n-1}, psi): as assembled (with ghost
     /// entries) and owned.
-    TrilinosWrappers::MPI::Vector load_assembly;
-    TrilinosWrappers::MPI::Vector load;
+    LA::MPI::Vector load_assembly;
+    LA::MPI::Vector load;
     /// The multipliers b - K zeta: owned and ghosted.
-    TrilinosWrappers::MPI::Vector residual_owned;
-    TrilinosWrappers::MPI::Vector residual;
-    TrilinosWrappers::MPI::Vector lumped_mass;
+    LA::MPI::Vector residual_owned;
+    LA::MPI::Vector residual;
+    LA::MPI::Vector lumped_mass;
     /// The copies into the ghosted damage and residual, with their imports
     /// kept (see GhostExchange): several per damage solve.
     GhostExchange damage_exchange;

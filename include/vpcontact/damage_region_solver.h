@@ -5,6 +5,8 @@
 #ifndef vpcontact_damage_region_solver_h
 #define vpcontact_damage_region_solver_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -78,10 +80,10 @@ namespace VPContact
      * for the region, as owned positions). Once per mesh and step size.
      */
     void
-    initialize(const TrilinosWrappers::SparseMatrix &matrix,
-               const IndexSet                       &owned,
-               const MPI_Comm                        communicator,
-               const Preconditioner                  kind);
+    initialize(const LA::SparseMatrix &matrix,
+               const IndexSet         &owned,
+               const MPI_Comm          communicator,
+               const Preconditioner    kind);
 
     /// Forget the region: the next solve builds it from its free set.
     void
@@ -96,11 +98,11 @@ namespace VPContact
      * SolverControl::NoConvergence after @p max_iterations.
      */
     unsigned int
-    solve(const TrilinosWrappers::MPI::Vector &b,
-          TrilinosWrappers::MPI::Vector       &x,
-          const std::vector<unsigned int>     &held,
-          const double                         tolerance,
-          const unsigned int                   max_iterations);
+    solve(const LA::MPI::Vector           &b,
+          LA::MPI::Vector                 &x,
+          const std::vector<unsigned int> &held,
+          const double                     tolerance,
+          const unsigned int               max_iterations);
 
     /// How often the region was built on this rank (for the tests).
     unsigned int
@@ -151,10 +153,10 @@ namespace VPContact
 
     /// solve() with Preconditioner::diagonal, on the free set selected.
     unsigned int
-    solve_eisenstat(const TrilinosWrappers::MPI::Vector &b,
-                    TrilinosWrappers::MPI::Vector       &x,
-                    const double                         tolerance,
-                    const unsigned int                   max_iterations);
+    solve_eisenstat(const LA::MPI::Vector &b,
+                    LA::MPI::Vector       &x,
+                    const double           tolerance,
+                    const unsigned int     max_iterations);
 
     /// The entries of the region's rows in other ranks' columns, and the
     /// owned entries the import sends (see prepare_diagonal_preconditioner()).
@@ -292,12 +294,12 @@ namespace VPContact
 
     // Work vectors (owned positions; zero off F between solves) and the
     // search direction as a Trilinos vector, for the ghost exchange.
-    std::vector<double>           residual;
-    std::vector<double>           preconditioned;
-    std::vector<double>           product;
-    std::vector<double>           region_work;
-    TrilinosWrappers::MPI::Vector direction;
-    TrilinosWrappers::MPI::Vector direction_ghosted;
+    std::vector<double> residual;
+    std::vector<double> preconditioned;
+    std::vector<double> product;
+    std::vector<double> region_work;
+    LA::MPI::Vector     direction;
+    LA::MPI::Vector     direction_ghosted;
     /// Owned -> ghosted layout, built once: deal.II's assignment between
     /// the two builds a new Epetra_Import every time (measured on 2 ranks
     /// at 512^2 cells: the damage solves took longer than on one).

@@ -7,6 +7,7 @@
 
 #include <vpcontact/damage_obstacle_snes.h>
 #include <vpcontact/damage_region_solver.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/spd_solver.h>
 #include <vpcontact/support_product.h>
 
@@ -105,7 +106,7 @@ namespace VPContact
      * constraint to apply, and a run makes hundreds of damage solves.
      */
     void
-    distribute_hanging_nodes(TrilinosWrappers::MPI::Vector &owned_vector) const;
+    distribute_hanging_nodes(LA::MPI::Vector &owned_vector) const;
 
     /// The local positions (see local_position()) of the owned hanging
     /// nodes, which every solve holds.
@@ -118,17 +119,15 @@ namespace VPContact
 
     /// Owned damage entries: FESystem vector -> compact vector.
     void
-    gather(const TrilinosWrappers::MPI::Vector &full,
-           TrilinosWrappers::MPI::Vector       &compact) const;
+    gather(const LA::MPI::Vector &full, LA::MPI::Vector &compact) const;
 
     /// Owned damage entries: compact vector -> FESystem vector (the
     /// displacement entries of @p full are left alone).
     void
-    scatter(const TrilinosWrappers::MPI::Vector &compact,
-            TrilinosWrappers::MPI::Vector       &full) const;
+    scatter(const LA::MPI::Vector &compact, LA::MPI::Vector &full) const;
 
     /// The matrix, for assembly (its sparsity pattern is set by reinit()).
-    TrilinosWrappers::SparseMatrix &
+    LA::SparseMatrix &
     matrix();
 
     /// Build the preconditioner of the assembled matrix.
@@ -139,8 +138,7 @@ namespace VPContact
     /// SupportProduct): for the changes of a damage solve, which vanish
     /// where the damage stays at a bound.
     void
-    vmult_on_support(TrilinosWrappers::MPI::Vector       &y,
-                     const TrilinosWrappers::MPI::Vector &x);
+    vmult_on_support(LA::MPI::Vector &y, const LA::MPI::Vector &x);
 
     /// A new time step: the region solver builds its region again from
     /// the free set of the step's first solve.
@@ -157,11 +155,11 @@ namespace VPContact
      * Returns the number of CG iterations.
      */
     unsigned int
-    solve(const TrilinosWrappers::MPI::Vector &b,
-          TrilinosWrappers::MPI::Vector       &x,
-          const std::vector<unsigned int>     &held,
-          const double                         tolerance,
-          const unsigned int                   max_iterations);
+    solve(const LA::MPI::Vector           &b,
+          LA::MPI::Vector                 &x,
+          const std::vector<unsigned int> &held,
+          const double                     tolerance,
+          const unsigned int               max_iterations);
 
     /// Whether Solver/Damage obstacle solver = SNES VI: the bounds are then
     /// found by solve_obstacle() instead of the caller's active set.
@@ -174,18 +172,18 @@ namespace VPContact
      * zeta_n. Returns the Newton steps.
      */
     unsigned int
-    solve_obstacle(const TrilinosWrappers::MPI::Vector &b,
-                   TrilinosWrappers::MPI::Vector       &zeta,
-                   const double                         tolerance,
-                   const unsigned int                   max_iterations,
-                   const unsigned int                   max_linear_iterations);
+    solve_obstacle(const LA::MPI::Vector &b,
+                   LA::MPI::Vector       &zeta,
+                   const double           tolerance,
+                   const unsigned int     max_iterations,
+                   const unsigned int     max_linear_iterations);
 
 
   private:
     /// Sets the index sets, full_position and cell_dofs; returns a ghosted
     /// FESystem vector holding the compact index of every relevant damage
     /// dof.
-    TrilinosWrappers::MPI::Vector
+    LA::MPI::Vector
     number_dofs(const DoFHandler<dim> &dof_handler,
                 const IndexSet        &locally_owned_dofs,
                 const IndexSet        &locally_relevant_dofs,
@@ -193,13 +191,12 @@ namespace VPContact
 
 
     static types::global_dof_index
-    to_compact(const TrilinosWrappers::MPI::Vector &index,
-               const types::global_dof_index        dof);
+    to_compact(const LA::MPI::Vector &index, const types::global_dof_index dof);
 
     void
     make_hanging_node_constraints(const DoFHandler<dim> &dof_handler,
                                   const IndexSet        &locally_relevant_dofs,
-                                  const TrilinosWrappers::MPI::Vector &index);
+                                  const LA::MPI::Vector &index);
 
     IndexSet compact_owned;
     IndexSet compact_relevant;
@@ -217,10 +214,10 @@ namespace VPContact
 
     /// Solver/Damage preconditioner, and the package of Solver/Linear
     /// algebra.
-    SpdMethod                      method  = SpdMethod::cg_incomplete_cholesky;
-    LinearAlgebra                  package = LinearAlgebra::trilinos;
-    TrilinosWrappers::SparseMatrix system_matrix;
-    std::unique_ptr<SpdSolver>     solver;
+    SpdMethod                  method  = SpdMethod::cg_incomplete_cholesky;
+    LinearAlgebra              package = LinearAlgebra::trilinos;
+    LA::SparseMatrix           system_matrix;
+    std::unique_ptr<SpdSolver> solver;
     /// The program's own solver on a region around the free nodes, for the
     /// first two choices of Solver/Damage preconditioner.
     bool                               use_region_solver = true;

@@ -4,6 +4,7 @@
 #ifndef vpcontact_displacement_system_h
 #define vpcontact_displacement_system_h
 
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/linear_solver.h>
 
 #include <deal.II/base/index_set.h>
@@ -33,9 +34,9 @@ namespace VPContact
     /// The shape functions of a cell that belong to the displacement.
     std::vector<unsigned int> shape_functions;
     /// K, b, and the solver's vector (du on the block).
-    TrilinosWrappers::SparseMatrix matrix;
-    TrilinosWrappers::MPI::Vector  rhs;
-    TrilinosWrappers::MPI::Vector  increment;
+    LA::SparseMatrix matrix;
+    LA::MPI::Vector  rhs;
+    LA::MPI::Vector  increment;
     /// Declared after the matrix, so destroyed before it: a factorization
     /// refers to the matrix.
     LinearSolver solver;

@@ -4,6 +4,8 @@
 #ifndef vpcontact_free_rows_system_h
 #define vpcontact_free_rows_system_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -40,27 +42,25 @@ namespace VPContact
      * (collective): if not, a preconditioner of matrix() can be kept.
      */
     bool
-    select(const TrilinosWrappers::SparseMatrix &matrix,
-           const std::vector<unsigned int>      &held);
+    select(const LA::SparseMatrix          &matrix,
+           const std::vector<unsigned int> &held);
 
     /// K_FF.
-    const TrilinosWrappers::SparseMatrix &
+    const LA::SparseMatrix &
     matrix() const;
 
     /// A vector laid out like the rows of K_FF.
     void
-    reinit_vector(TrilinosWrappers::MPI::Vector &free_vector) const;
+    reinit_vector(LA::MPI::Vector &free_vector) const;
 
     /// The free entries of @p full (laid out like K's rows) into @p free.
     void
-    restrict_to_free(const TrilinosWrappers::MPI::Vector &full,
-                     TrilinosWrappers::MPI::Vector       &free) const;
+    restrict_to_free(const LA::MPI::Vector &full, LA::MPI::Vector &free) const;
 
     /// The entries of @p free into the free positions of @p full; the
     /// other entries of @p full are left alone.
     void
-    extend_to_full(const TrilinosWrappers::MPI::Vector &free,
-                   TrilinosWrappers::MPI::Vector       &full) const;
+    extend_to_full(const LA::MPI::Vector &free, LA::MPI::Vector &full) const;
 
   private:
     /// The new global row of each column of K's local matrix, -1 where the
@@ -70,15 +70,15 @@ namespace VPContact
 
     /// Fill K_FF from the free rows of @p full_matrix.
     void
-    extract(const TrilinosWrappers::SparseMatrix &full_matrix);
+    extract(const LA::SparseMatrix &full_matrix);
 
     /// The owned local positions of the free rows, in increasing order.
     std::vector<unsigned int> free_positions;
     /// The rows of K_FF that this rank owns, in the numbering of K_FF.
     IndexSet free_rows;
 
-    TrilinosWrappers::SparseMatrix free_matrix;
-    bool                           has_matrix = false;
+    LA::SparseMatrix free_matrix;
+    bool             has_matrix = false;
   };
 } // namespace VPContact
 

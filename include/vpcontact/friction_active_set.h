@@ -4,6 +4,7 @@
 #ifndef vpcontact_friction_active_set_h
 #define vpcontact_friction_active_set_h
 
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/tresca_friction.h>
 
 #include <deal.II/base/index_set.h>
@@ -91,13 +92,13 @@ namespace VPContact
     /// Add the friction force -m_i g_i n_i of every owned slip node.
     void
     add_slip_forces(const AffineConstraints<double> &constraints,
-                    TrilinosWrappers::MPI::Vector   &rhs) const;
+                    LA::MPI::Vector                 &rhs) const;
 
     /// Add the slip stiffness m_i beta_i (P_i - n_i n_i^T) of every owned
     /// slip node whose tangent space is a plane (before compress()).
     void
     add_slip_stiffness(const AffineConstraints<double> &constraints,
-                       TrilinosWrappers::SparseMatrix  &matrix);
+                       LA::SparseMatrix                &matrix);
 
     /**
      * After an update() that turned slip directions but changed no set:
@@ -107,7 +108,7 @@ namespace VPContact
      */
     void
     update_slip_stiffness(const AffineConstraints<double> &constraints,
-                          TrilinosWrappers::SparseMatrix  &matrix);
+                          LA::SparseMatrix                &matrix);
 
     /**
      * Recompute lambda and w from the ghosted @p residual and @p increment
@@ -117,11 +118,11 @@ namespace VPContact
      * @p direction_tolerance.
      */
     Changes
-    update(const TrilinosWrappers::MPI::Vector &residual,
-           const TrilinosWrappers::MPI::Vector &increment,
-           const double                         youngs_modulus,
-           const double                         c_factor,
-           const double                         direction_tolerance);
+    update(const LA::MPI::Vector &residual,
+           const LA::MPI::Vector &increment,
+           const double           youngs_modulus,
+           const double           c_factor,
+           const double           direction_tolerance);
 
     /// Global numbers of stick and slip nodes.
     std::pair<unsigned int, unsigned int>
@@ -157,8 +158,7 @@ namespace VPContact
      * node's tangent into the x component.
      */
     void
-    fill_output(TrilinosWrappers::MPI::Vector &status,
-                TrilinosWrappers::MPI::Vector &traction) const;
+    fill_output(LA::MPI::Vector &status, LA::MPI::Vector &traction) const;
 
     bool
     empty() const;
@@ -178,12 +178,12 @@ namespace VPContact
      * its direction is a fixed point until it next changes.
      */
     void
-    write_state(TrilinosWrappers::MPI::Vector &state) const;
+    write_state(LA::MPI::Vector &state) const;
 
     /// The inverse of write_state(), from a ghosted @p state, for every
     /// node this rank sees. Throws if a value is not a status.
     void
-    read_state(const TrilinosWrappers::MPI::Vector &state);
+    read_state(const LA::MPI::Vector &state);
 
   private:
     /// Tangential vectors in the coordinates of a node's tangent basis

@@ -5,6 +5,7 @@
 #define vpcontact_friction_problem_h
 
 #include <vpcontact/friction_active_set.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/statistics.h>
 #include <vpcontact/tresca_friction.h>
 
@@ -40,7 +41,7 @@ namespace VPContact
     /// Assembles r on the given cells into the vector (with ghost entries).
     using ResidualAssembler
       = std::function<void(const std::vector<CellIterator> &,
-                           TrilinosWrappers::MPI::Vector &)>;
+                           LA::MPI::Vector &)>;
 
     FrictionProblem(const TrescaFriction<dim> &friction,
                     const MPI_Comm             communicator);
@@ -71,27 +72,27 @@ namespace VPContact
     /// The slip nodes' forces -m g n into @p rhs.
     void
     add_slip_forces(const AffineConstraints<double> &constraints,
-                    TrilinosWrappers::MPI::Vector   &rhs) const;
+                    LA::MPI::Vector                 &rhs) const;
 
     /// The slip nodes' stiffness (3D) into @p matrix, before compress().
     void
     add_slip_stiffness(const AffineConstraints<double> &constraints,
-                       TrilinosWrappers::SparseMatrix  &matrix);
+                       LA::SparseMatrix                &matrix);
 
     /// The change of the slip nodes' stiffness since the matrix was last
     /// given it, after an update() that changed no set; compresses it.
     void
     update_slip_stiffness(const AffineConstraints<double> &constraints,
-                          TrilinosWrappers::SparseMatrix  &matrix);
+                          LA::SparseMatrix                &matrix);
 
     /**
      * One active-set iteration after a solve: the residual by
      * @p assemble_residual, the multipliers, the next sets.
      */
     typename FrictionActiveSet<dim>::Changes
-    update(const TrilinosWrappers::MPI::Vector &increment,
-           const double                         youngs_modulus,
-           const ResidualAssembler             &assemble_residual);
+    update(const LA::MPI::Vector   &increment,
+           const double             youngs_modulus,
+           const ResidualAssembler &assemble_residual);
 
     /**
      * Record what the constraints without any stick node leave free (a
@@ -129,17 +130,16 @@ namespace VPContact
 
     /// Status and tangential traction of the contact nodes, for output.
     void
-    fill_output(TrilinosWrappers::MPI::Vector &status,
-                TrilinosWrappers::MPI::Vector &traction) const;
+    fill_output(LA::MPI::Vector &status, LA::MPI::Vector &traction) const;
 
     /// The sets into @p state and the counters a resumed run needs.
     void
-    write_checkpoint(TrilinosWrappers::MPI::Vector &state,
+    write_checkpoint(LA::MPI::Vector               &state,
                      std::map<std::string, double> &counters) const;
 
     /// The state write_checkpoint() saved (@p state ghosted).
     void
-    read_checkpoint(const TrilinosWrappers::MPI::Vector              &state,
+    read_checkpoint(const LA::MPI::Vector                            &state,
                     const std::function<double(const std::string &)> &counter);
 
   private:
@@ -149,11 +149,11 @@ namespace VPContact
     /// The locally owned cells with a contact node, where r is assembled.
     std::vector<CellIterator> contact_cells;
     /// r as assembled (with ghost entries), and a ghosted copy.
-    TrilinosWrappers::MPI::Vector residual_assembly;
-    TrilinosWrappers::MPI::Vector residual;
-    unsigned int                  last_iterations   = 0;
-    double                        largest_violation = 0;
-    std::string                   free_when_all_slip;
+    LA::MPI::Vector residual_assembly;
+    LA::MPI::Vector residual;
+    unsigned int    last_iterations   = 0;
+    double          largest_violation = 0;
+    std::string     free_when_all_slip;
   };
 } // namespace VPContact
 

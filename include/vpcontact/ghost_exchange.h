@@ -3,6 +3,8 @@
 #ifndef vpcontact_ghost_exchange_h
 #define vpcontact_ghost_exchange_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <Epetra_Import.h>
@@ -24,8 +26,7 @@ namespace VPContact
    * permuted copy), even on one rank.
    */
   void
-  copy_owned_values(const TrilinosWrappers::MPI::Vector &from,
-                    TrilinosWrappers::MPI::Vector       &to);
+  copy_owned_values(const LA::MPI::Vector &from, LA::MPI::Vector &to);
 
 
 
@@ -56,8 +57,7 @@ namespace VPContact
   {
   public:
     void
-    copy(const TrilinosWrappers::MPI::Vector &owned,
-         TrilinosWrappers::MPI::Vector       &ghosted);
+    copy(const LA::MPI::Vector &owned, LA::MPI::Vector &ghosted);
 
   private:
     /// One pair of layouts seen: copies of the two layouts (they keep the

@@ -3,6 +3,8 @@
 #ifndef vpcontact_increment_predictor_h
 #define vpcontact_increment_predictor_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -43,11 +45,11 @@ namespace VPContact
     /// Overwrite @p increment, which holds w_{n-1}, with the prediction of
     /// w_n.
     void
-    predict(TrilinosWrappers::MPI::Vector &increment) const;
+    predict(LA::MPI::Vector &increment) const;
 
     /// Record the increment of the step just solved.
     void
-    record(const TrilinosWrappers::MPI::Vector &increment);
+    record(const LA::MPI::Vector &increment);
 
     /// For checkpoints: the number of increments recorded (at most 3)...
     unsigned int
@@ -55,16 +57,16 @@ namespace VPContact
 
     /// ... and w_{n-1 - i}, i = 0, 1, 2 (read, or restored from a
     /// checkpoint together with set_n_recorded()).
-    TrilinosWrappers::MPI::Vector &
+    LA::MPI::Vector &
     recorded(const unsigned int i);
 
     void
     set_n_recorded(const unsigned int n);
 
   private:
-    unsigned int                                 degree  = 2;
-    unsigned int                                 n_valid = 0;
-    std::array<TrilinosWrappers::MPI::Vector, 3> history;
+    unsigned int                   degree  = 2;
+    unsigned int                   n_valid = 0;
+    std::array<LA::MPI::Vector, 3> history;
   };
 } // namespace VPContact
 

@@ -4,6 +4,7 @@
 #ifndef vpcontact_linear_solver_h
 #define vpcontact_linear_solver_h
 
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/spd_solver.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -43,8 +44,8 @@ namespace VPContact
      * are the rigid motions, for AMG.
      */
     void
-    initialize(const TrilinosWrappers::SparseMatrix &matrix,
-               const NearNullSpace                  &near_null_space);
+    initialize(const LA::SparseMatrix &matrix,
+               const NearNullSpace    &near_null_space);
 
     /// Release the preconditioner or factorization (before the matrix it
     /// refers to is re-initialised or destroyed).
@@ -58,8 +59,7 @@ namespace VPContact
      * tolerance.
      */
     unsigned int
-    solve(TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &b);
+    solve(LA::MPI::Vector &x, const LA::MPI::Vector &b);
 
     /**
      * Whether solve_in_background() may be called: the factors of
@@ -85,9 +85,9 @@ namespace VPContact
      * caller's work that only needs x); it must not call MPI.
      */
     std::future<unsigned int>
-    solve_in_background(TrilinosWrappers::MPI::Vector       &x,
-                        const TrilinosWrappers::MPI::Vector &b,
-                        const std::function<void()>         &then = {});
+    solve_in_background(LA::MPI::Vector             &x,
+                        const LA::MPI::Vector       &b,
+                        const std::function<void()> &then = {});
 
     /**
      * The matrix given to initialize() changed in place by a little (the
@@ -108,8 +108,7 @@ namespace VPContact
 
     /// One application of the preconditioner or one solve with the factors.
     void
-    precondition(TrilinosWrappers::MPI::Vector       &dst,
-                 const TrilinosWrappers::MPI::Vector &src);
+    precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src);
 
     /// Whether the method is a factorization.
     bool
@@ -133,8 +132,8 @@ namespace VPContact
     unsigned int               max_iterations     = 1000;
     std::unique_ptr<SpdSolver> solver;
     /// The matrix of initialize(), and whether it changed since.
-    const TrilinosWrappers::SparseMatrix *matrix                   = nullptr;
-    bool                                  changed_since_initialize = false;
+    const LA::SparseMatrix *matrix                   = nullptr;
+    bool                    changed_since_initialize = false;
     /// Iterations of the last solve before and after the matrix changed.
     unsigned int iterations_before = 0;
     unsigned int iterations_after  = 0;
@@ -144,16 +143,16 @@ namespace VPContact
 
     /// |b|, after checking that @p b is finite.
     static double
-    checked_norm(const TrilinosWrappers::MPI::Vector &b);
+    checked_norm(const LA::MPI::Vector &b);
 
     /// CG on the changed matrix with the old preconditioner; false (and
     /// @p x unchanged) where it does not converge within a few times the
     /// iterations of a fresh solve.
     bool
-    solve_changed_matrix(TrilinosWrappers::MPI::Vector       &x,
-                         const TrilinosWrappers::MPI::Vector &b,
-                         const double                         tolerance,
-                         unsigned int                        &iterations);
+    solve_changed_matrix(LA::MPI::Vector       &x,
+                         const LA::MPI::Vector &b,
+                         const double           tolerance,
+                         unsigned int          &iterations);
   };
 } // namespace VPContact
 

@@ -4,6 +4,7 @@
 #ifndef vpcontact_monitor_points_h
 #define vpcontact_monitor_points_h
 
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/statistics.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -48,8 +49,8 @@ namespace VPContact
 
     /// The columns of every point from the ghosted @p solution. Collective.
     void
-    add_statistics(const TrilinosWrappers::MPI::Vector &solution,
-                   Statistics                          &statistics) const;
+    add_statistics(const LA::MPI::Vector &solution,
+                   Statistics            &statistics) const;
 
   private:
     struct Location

@@ -4,6 +4,8 @@
 #ifndef vpcontact_owned_constraints_h
 #define vpcontact_owned_constraints_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -29,7 +31,7 @@ namespace VPContact
    */
   void
   distribute_constraints(const AffineConstraints<double> &constraints,
-                         TrilinosWrappers::MPI::Vector   &vector);
+                         LA::MPI::Vector                 &vector);
 
   /**
    * distribute_constraints() where every constraint of this rank's entries
@@ -39,7 +41,7 @@ namespace VPContact
    */
   void
   distribute_owned_constraints(const AffineConstraints<double> &constraints,
-                               TrilinosWrappers::MPI::Vector   &vector);
+                               LA::MPI::Vector                 &vector);
 } // namespace VPContact
 
 #endif

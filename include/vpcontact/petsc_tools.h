@@ -6,6 +6,8 @@
 #ifndef vpcontact_petsc_tools_h
 #define vpcontact_petsc_tools_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -63,17 +65,17 @@ namespace VPContact
    * aggregates together. The caller destroys it.
    */
   Mat
-  copy_to_petsc(const TrilinosWrappers::SparseMatrix &matrix,
-                const unsigned int                    dofs_per_node);
+  copy_to_petsc(const LA::SparseMatrix &matrix,
+                const unsigned int      dofs_per_node);
 
   /// The owned entries of @p from into the PETSc vector @p to of the same
   /// layout.
   void
-  copy_to_petsc(const TrilinosWrappers::MPI::Vector &from, Vec to);
+  copy_to_petsc(const LA::MPI::Vector &from, Vec to);
 
   /// The owned entries of the PETSc vector @p from into @p to.
   void
-  copy_from_petsc(Vec from, TrilinosWrappers::MPI::Vector &to);
+  copy_from_petsc(Vec from, LA::MPI::Vector &to);
 } // namespace VPContact
 
 #endif

@@ -19,6 +19,7 @@
 #include <vpcontact/ghost_exchange.h>
 #include <vpcontact/increment_predictor.h>
 #include <vpcontact/initial_conditions.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/monitor_points.h>
 #include <vpcontact/output_writer.h>
 #include <vpcontact/quadrature_history.h>
@@ -255,8 +256,7 @@ namespace VPContact
     void
     setup_displacement_matrix();
     void
-    make_constraints(const double                         time,
-                     const TrilinosWrappers::MPI::Vector *previous);
+    make_constraints(const double time, const LA::MPI::Vector *previous);
     void
     setup_stress_history();
     NearNullSpace
@@ -282,7 +282,7 @@ namespace VPContact
     void
     assemble_residual(
       const std::vector<typename DoFHandler<dim>::active_cell_iterator> &cells,
-      TrilinosWrappers::MPI::Vector &residual) const;
+      LA::MPI::Vector &residual) const;
     void
     add_cell_loads(const typename DoFHandler<dim>::active_cell_iterator &cell,
                    const FEValues<dim> &fe_values,
@@ -415,7 +415,7 @@ namespace VPContact
     unsigned int
     restore_checkpoint();
     void
-    read_checkpoint_fields(TrilinosWrappers::MPI::Vector &sets_owned);
+    read_checkpoint_fields(LA::MPI::Vector &sets_owned);
     void
     restore_output_records(const CheckpointMetadata &checkpoint);
     bool
@@ -476,17 +476,17 @@ namespace VPContact
     /// K du = b on the displacement block, and its solver.
     DisplacementSystem displacement;
     /// u_n: owned part and ghosted copy for evaluation and output.
-    TrilinosWrappers::MPI::Vector solution_owned;
-    TrilinosWrappers::MPI::Vector solution;
+    LA::MPI::Vector solution_owned;
+    LA::MPI::Vector solution;
     /// du = u_n - u_{n-1}: owned part (the solver's vector), ghosted copy.
-    TrilinosWrappers::MPI::Vector increment_owned;
-    TrilinosWrappers::MPI::Vector increment;
+    LA::MPI::Vector increment_owned;
+    LA::MPI::Vector increment;
     /// The copies of both into their ghosted vectors, with the import kept
     /// (deal.II 9.4's assignment builds one per call; see GhostExchange).
     GhostExchange ghosts;
     /// A Newton correction of the implicit step (owned, displacement
     /// block).
-    TrilinosWrappers::MPI::Vector newton_update;
+    LA::MPI::Vector newton_update;
 
     StressHistory<dim> stress_history;
 

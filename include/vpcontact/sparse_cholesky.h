@@ -4,6 +4,8 @@
 #ifndef vpcontact_sparse_cholesky_h
 #define vpcontact_sparse_cholesky_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -42,12 +44,11 @@ namespace VPContact
      * message when it is not positive definite or memory runs out.
      */
     void
-    factorize(const TrilinosWrappers::SparseMatrix &matrix);
+    factorize(const LA::SparseMatrix &matrix);
 
     /// dst = K^{-1} src.
     void
-    solve(TrilinosWrappers::MPI::Vector       &dst,
-          const TrilinosWrappers::MPI::Vector &src) const;
+    solve(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const;
 
   private:
     void

@@ -5,6 +5,8 @@
 #ifndef vpcontact_spd_solver_h
 #define vpcontact_spd_solver_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -49,8 +51,8 @@ namespace VPContact
    */
   struct NearNullSpace
   {
-    unsigned int                               dofs_per_node = 1;
-    std::vector<TrilinosWrappers::MPI::Vector> modes;
+    unsigned int                 dofs_per_node = 1;
+    std::vector<LA::MPI::Vector> modes;
   };
 
   /**
@@ -84,8 +86,8 @@ namespace VPContact
      * outlive them; @p near_null_space is read by AMG only.
      */
     virtual void
-    initialize(const TrilinosWrappers::SparseMatrix &matrix,
-               const NearNullSpace                  &near_null_space)
+    initialize(const LA::SparseMatrix &matrix,
+               const NearNullSpace    &near_null_space)
       = 0;
 
     /**
@@ -97,17 +99,16 @@ namespace VPContact
      * factors.
      */
     virtual unsigned int
-    solve(TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &b,
-          SolverControl                       &control,
-          const std::vector<unsigned int>     &held = {})
+    solve(LA::MPI::Vector                 &x,
+          const LA::MPI::Vector           &b,
+          SolverControl                   &control,
+          const std::vector<unsigned int> &held = {})
       = 0;
 
     /// One application of the preconditioner, or one solve with the
     /// factors: dst = C^{-1} src.
     virtual void
-    precondition(TrilinosWrappers::MPI::Vector       &dst,
-                 const TrilinosWrappers::MPI::Vector &src)
+    precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src)
       = 0;
 
     /// Whether solve() uses factors (and ignores the tolerance).

@@ -3,6 +3,8 @@
 #ifndef vpcontact_support_product_h
 #define vpcontact_support_product_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -22,8 +24,7 @@ namespace VPContact
    * not see.)
    */
   IndexSet
-  columns_of_owned_rows(const TrilinosWrappers::SparseMatrix &matrix,
-                        const IndexSet                       &owned);
+  columns_of_owned_rows(const LA::SparseMatrix &matrix, const IndexSet &owned);
 
   /**
    * For each local column of @p matrix, its position in the local storage
@@ -31,8 +32,8 @@ namespace VPContact
    * columns_of_owned_rows()).
    */
   std::vector<unsigned int>
-  ghosted_positions_of_columns(const TrilinosWrappers::SparseMatrix &matrix,
-                               const Epetra_BlockMap &ghosted_map);
+  ghosted_positions_of_columns(const LA::SparseMatrix &matrix,
+                               const Epetra_BlockMap  &ghosted_map);
 
   /**
    * y = K x for a symmetric matrix K, summed column by column over the
@@ -56,14 +57,13 @@ namespace VPContact
   public:
     /// Keep the owned rows of @p matrix by column. Once per matrix.
     void
-    initialize(const TrilinosWrappers::SparseMatrix &matrix,
-               const IndexSet                       &owned,
-               const MPI_Comm                        communicator);
+    initialize(const LA::SparseMatrix &matrix,
+               const IndexSet         &owned,
+               const MPI_Comm          communicator);
 
     /// @p y = K @p x (both owned vectors of the matrix's row layout).
     void
-    vmult(TrilinosWrappers::MPI::Vector       &y,
-          const TrilinosWrappers::MPI::Vector &x);
+    vmult(LA::MPI::Vector &y, const LA::MPI::Vector &x);
 
   private:
     /// For each position in the ghosted layout, its entries in the owned
@@ -77,7 +77,7 @@ namespace VPContact
     std::vector<unsigned int> ghost_positions;
     bool                      serial_layout = true;
     /// x in the ghosted layout, and the import into it (several ranks).
-    TrilinosWrappers::MPI::Vector  x_ghosted;
+    LA::MPI::Vector                x_ghosted;
     std::unique_ptr<Epetra_Import> importer;
   };
 } // namespace VPContact

@@ -3,6 +3,8 @@
 #ifndef vpcontact_verification_h
 #define vpcontact_verification_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -55,10 +57,10 @@ namespace VPContact
      * @p damage_dofs (all ranks); the largest is kept for summary().
      */
     double
-    damage_error(const DoFHandler<dim>               &dof_handler,
-                 const TrilinosWrappers::MPI::Vector &solution,
-                 const IndexSet                      &damage_dofs,
-                 const double                         time);
+    damage_error(const DoFHandler<dim> &dof_handler,
+                 const LA::MPI::Vector &solution,
+                 const IndexSet        &damage_dofs,
+                 const double           time);
 
     /// Whether an exact stress is given.
     bool
@@ -78,10 +80,10 @@ namespace VPContact
      * for summary().
      */
     Errors
-    compute_errors(const DoFHandler<dim>               &dof_handler,
-                   const TrilinosWrappers::MPI::Vector &solution,
-                   const double                         time,
-                   const double                         u_max);
+    compute_errors(const DoFHandler<dim> &dof_handler,
+                   const LA::MPI::Vector &solution,
+                   const double           time,
+                   const double           u_max);
 
     /**
      * One line for the end of the run: the largest nodal error relative to

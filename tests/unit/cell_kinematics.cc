@@ -8,6 +8,7 @@
 //  * A random vector: strains, damage and the work of a random stress on
 //    the test functions agree with those of FEValues.
 #include <vpcontact/cell_kinematics.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -76,9 +77,9 @@ namespace
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     const QGauss<dim> quadrature(2);
 
-    TrilinosWrappers::MPI::Vector owned_vector(owned, comm);
-    TrilinosWrappers::MPI::Vector ghosted(owned, relevant, comm);
-    CellKinematics<dim>           kinematics;
+    LA::MPI::Vector     owned_vector(owned, comm);
+    LA::MPI::Vector     ghosted(owned, relevant, comm);
+    CellKinematics<dim> kinematics;
     kinematics.reinit(dof_handler, quadrature, ghosted);
 
     // Known answer: the affine field.

@@ -11,6 +11,8 @@
 // checkpoint on 2 ranks; the linear solves then differ at round-off, and
 // the results must agree to 1e-8 (the solver tolerance is 1e-12), the
 // active sets exactly.
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
@@ -129,7 +131,7 @@ namespace
         AssertThrow(a.dof_handler.locally_owned_dofs()
                       == b.dof_handler.locally_owned_dofs(),
                     ExcInternalError());
-        TrilinosWrappers::MPI::Vector difference(a.vectors[v]);
+        LA::MPI::Vector difference(a.vectors[v]);
         difference -= b.vectors[v];
         relative.push_back(difference.linfty_norm()
                            / a.vectors[v].linfty_norm());

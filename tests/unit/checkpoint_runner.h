@@ -6,6 +6,7 @@
 
 #include <vpcontact/checkpoint_fields.h>
 #include <vpcontact/geometry.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/simulator.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -153,8 +154,8 @@ namespace VPContact
     FESystem<2>                             fe;
     DoFHandler<2>                           dof_handler;
     /// The solution, the last three increments and the active sets.
-    std::vector<TrilinosWrappers::MPI::Vector> vectors;
-    StressHistory<2>                           history;
+    std::vector<LA::MPI::Vector> vectors;
+    StressHistory<2>             history;
   };
 
   /**
@@ -174,7 +175,7 @@ namespace VPContact
     state.triangulation.load(folder + "/mesh");
     state.dof_handler.distribute_dofs(state.fe);
     state.vectors.resize(5);
-    std::vector<TrilinosWrappers::MPI::Vector *> pointers;
+    std::vector<LA::MPI::Vector *> pointers;
     for (auto &v : state.vectors)
       {
         v.reinit(state.dof_handler.locally_owned_dofs(),

@@ -8,6 +8,7 @@
 // gives for all cells (to round-off), and the same bits with 1 and 2
 // threads; a new constraint makes the plan outdated.
 #include <vpcontact/conflict_free_chunks.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/multithread_info.h>
@@ -48,7 +49,7 @@ namespace
   assemble_by_plan(const ConflictFreeChunks        &plan,
                    const Cells                     &cells,
                    const AffineConstraints<double> &constraints,
-                   TrilinosWrappers::MPI::Vector   &vector)
+                   LA::MPI::Vector                 &vector)
   {
     vector                   = 0.;
     double *const      local = vector.begin();
@@ -168,7 +169,7 @@ main(int argc, char **argv)
     once = once && (s == 1);
 
   // Against the serial assembly of every cell, and 1 thread against 2.
-  TrilinosWrappers::MPI::Vector expected(owned, comm), by_plan(owned, comm),
+  LA::MPI::Vector expected(owned, comm), by_plan(owned, comm),
     one_thread(owned, comm);
   for (std::size_t i = 0; i < cells.size(); ++i)
     {

@@ -9,6 +9,7 @@
 // into halves between y = 8 and 9, so the rings cross to the other rank):
 // both must print the same.
 #include <vpcontact/damage_bounds.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -40,20 +41,19 @@ namespace
   // what was freed and how far from the seed the free and the upper nodes
   // lie.
   void
-  check(const TrilinosWrappers::SparseMatrix &matrix,
-        const IndexSet                       &owned,
-        const IndexSet                       &relevant,
-        const unsigned int                    seed,
-        const unsigned int                    rings)
+  check(const LA::SparseMatrix &matrix,
+        const IndexSet         &owned,
+        const IndexSet         &relevant,
+        const unsigned int      seed,
+        const unsigned int      rings)
   {
-    const MPI_Comm                comm = matrix.get_mpi_communicator();
-    TrilinosWrappers::MPI::Vector mass(owned, relevant, comm);
-    TrilinosWrappers::MPI::Vector residual(mass), damage(mass);
+    const MPI_Comm  comm = matrix.get_mpi_communicator();
+    LA::MPI::Vector mass(owned, relevant, comm);
+    LA::MPI::Vector residual(mass), damage(mass);
     {
       // Upper: zeta = 1 with a positive multiplier; the seed: zeta = 1/2
       // with none.
-      TrilinosWrappers::MPI::Vector m(owned, comm), r(owned, comm),
-        z(owned, comm);
+      LA::MPI::Vector m(owned, comm), r(owned, comm), z(owned, comm);
       for (const auto i : owned)
         {
           m(i) = 1. / (n * n);
@@ -73,7 +73,7 @@ namespace
     const double rings_moved      = bounds.rings_moved();
 
     // The sets by node, and the distances from the seed.
-    TrilinosWrappers::MPI::Vector state(owned, comm);
+    LA::MPI::Vector state(owned, comm);
     bounds.write_state(state);
     unsigned int farthest_free = 0, nearest_upper = n + 1;
     for (const auto i : owned)
@@ -106,7 +106,7 @@ main(int argc, char **argv)
     for (unsigned int j = 0; j < nodes; ++j)
       if (K[i][j] != 0.)
         relevant.add_index(j);
-  TrilinosWrappers::SparseMatrix matrix;
+  LA::SparseMatrix matrix;
   copy_to_trilinos(K, owned, comm, matrix);
 
   // The centre (8, 8), next to the cut between the ranks; a corner; and

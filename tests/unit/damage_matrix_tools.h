@@ -3,6 +3,8 @@
 #ifndef vpcontact_tests_damage_matrix_tools_h
 #define vpcontact_tests_damage_matrix_tools_h
 
+#include <vpcontact/linear_algebra.h>
+
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -62,10 +64,10 @@ namespace VPContact
     /// The rows of K that this rank owns, with their nonzero entries, in a
     /// Trilinos matrix (square: the columns distributed as the rows).
     inline void
-    copy_to_trilinos(const DenseMatrix              &K,
-                     const IndexSet                 &owned,
-                     const MPI_Comm                  comm,
-                     TrilinosWrappers::SparseMatrix &matrix)
+    copy_to_trilinos(const DenseMatrix &K,
+                     const IndexSet    &owned,
+                     const MPI_Comm     comm,
+                     LA::SparseMatrix  &matrix)
     {
       const unsigned int     size = K.size();
       DynamicSparsityPattern pattern(size, size);

@@ -8,6 +8,7 @@
 // solve the 3 x 3 system of the free nodes); and for b = 0 it returns x = 0
 // without iterations.
 #include <vpcontact/damage_region_solver.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
@@ -29,8 +30,8 @@ main(int argc, char **argv)
 
   const DenseMatrix kershaw
     = {{3, -2, 0, 2}, {-2, 3, -2, 0}, {0, -2, 3, -2}, {2, 0, -2, 3}};
-  IndexSet                       all = complete_index_set(4);
-  TrilinosWrappers::SparseMatrix matrix;
+  IndexSet         all = complete_index_set(4);
+  LA::SparseMatrix matrix;
   copy_to_trilinos(kershaw, all, comm, matrix);
 
   for (const auto kind :
@@ -52,7 +53,7 @@ main(int argc, char **argv)
           std::vector<unsigned int> held;
           if (hold_node_1)
             held.push_back(1);
-          TrilinosWrappers::MPI::Vector b(all, comm), x(all, comm);
+          LA::MPI::Vector b(all, comm), x(all, comm);
           for (unsigned int i = 0; i < 4; ++i)
             {
               double s = 0;
@@ -75,7 +76,7 @@ main(int argc, char **argv)
         }
 
       // b = 0 from a nonzero start vector: x = 0 at once.
-      TrilinosWrappers::MPI::Vector b(all, comm), x(all, comm);
+      LA::MPI::Vector b(all, comm), x(all, comm);
       for (unsigned int i = 0; i < 4; ++i)
         x(i) = 1. + i;
       const unsigned int iterations = solver.solve(b, x, {}, 1e-12, 100);

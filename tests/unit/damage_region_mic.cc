@@ -6,6 +6,7 @@
 // start vector is 1 itself, and its step length is 1. IC(0), which drops
 // its fill-in instead, needs more. Both converge to x = 1.
 #include <vpcontact/damage_region_solver.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -28,8 +29,8 @@ main(int argc, char **argv)
   const double       kappa = 0.01, k = 0.01;
   const DenseMatrix  K = q1_damage_matrix(n, kappa, k);
 
-  IndexSet                       all = complete_index_set(nodes);
-  TrilinosWrappers::SparseMatrix matrix;
+  IndexSet         all = complete_index_set(nodes);
+  LA::SparseMatrix matrix;
   copy_to_trilinos(K, all, comm, matrix);
 
   for (const auto kind :
@@ -40,7 +41,7 @@ main(int argc, char **argv)
       DamageRegionSolver solver;
       solver.initialize(matrix, all, comm, kind);
       solver.begin_step();
-      TrilinosWrappers::MPI::Vector b(all, comm), x(all, comm);
+      LA::MPI::Vector b(all, comm), x(all, comm);
       for (unsigned int i = 0; i < nodes; ++i)
         {
           double s = 0;

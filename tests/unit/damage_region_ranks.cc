@@ -9,6 +9,7 @@
 // the other rank is a term of its own (K_off in solve_eisenstat()): with it
 // left out, this test fails on 2 ranks.
 #include <vpcontact/damage_region_solver.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -45,8 +46,8 @@ main(int argc, char **argv)
           exact[node(x, y)] = 1. + std::sin(3. * x * h) * std::cos(2. * y * h);
       }
 
-  const IndexSet                 owned = contiguous_rows(nodes, comm);
-  TrilinosWrappers::SparseMatrix matrix;
+  const IndexSet   owned = contiguous_rows(nodes, comm);
+  LA::SparseMatrix matrix;
   copy_to_trilinos(K, owned, comm, matrix);
 
   for (const auto kind :
@@ -57,8 +58,8 @@ main(int argc, char **argv)
       DamageRegionSolver solver;
       solver.initialize(matrix, owned, comm, kind);
       solver.begin_step();
-      TrilinosWrappers::MPI::Vector b(owned, comm), x(owned, comm);
-      std::vector<unsigned int>     held_positions;
+      LA::MPI::Vector           b(owned, comm), x(owned, comm);
+      std::vector<unsigned int> held_positions;
       for (const auto i : owned)
         {
           double s = 0;

@@ -11,6 +11,7 @@
 // 0.25, y > 0.51, which lie on part of the ranks only) with the same
 // preconditioner. The same on 2 and 3 ranks.
 #include <vpcontact/damage_system.h>
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/linear_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -126,7 +127,7 @@ main(int argc, char **argv)
             const auto is_held = [&](const Point<2> &p) {
               return below ? p[axis] < threshold : p[axis] > threshold;
             };
-            TrilinosWrappers::MPI::Vector        exact(system.owned(), comm);
+            LA::MPI::Vector                      exact(system.owned(), comm);
             std::vector<unsigned int>            held;
             std::vector<types::global_dof_index> indices;
             for (const auto &cell : dof_handler.active_cell_iterators())
@@ -147,7 +148,7 @@ main(int argc, char **argv)
               if (exact(i) == 0.)
                 held.push_back(system.local_position(i));
 
-            TrilinosWrappers::MPI::Vector b(exact), x(exact);
+            LA::MPI::Vector b(exact), x(exact);
             system.matrix().vmult(b, exact);
             for (const auto i : held)
               b.begin()[i] = 0.;
@@ -173,7 +174,7 @@ main(int argc, char **argv)
                 for (const auto i : held)
                   held_max = std::max(held_max, std::abs(x.begin()[i]));
                 held_max = Utilities::MPI::max(held_max, comm);
-                TrilinosWrappers::MPI::Vector error(x);
+                LA::MPI::Vector error(x);
                 error -= exact;
                 const double relative
                   = error.linfty_norm() / exact.linfty_norm();

@@ -7,6 +7,7 @@
 // owned vectors with layouts of their own in turn (it keeps both pairs), and
 // copy_owned_values() copies between two such owned vectors.
 #include <vpcontact/ghost_exchange.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -21,10 +22,10 @@ namespace
   // over all ranks.
   template <typename Value>
   double
-  largest_error(const TrilinosWrappers::MPI::Vector &ghosted,
-                const IndexSet                      &relevant,
-                const Value                         &value,
-                const MPI_Comm                       comm)
+  largest_error(const LA::MPI::Vector &ghosted,
+                const IndexSet        &relevant,
+                const Value           &value,
+                const MPI_Comm         comm)
   {
     double error = 0;
     for (const auto i : relevant)
@@ -55,9 +56,9 @@ main(int argc, char **argv)
     return relevant;
   };
 
-  TrilinosWrappers::MPI::Vector owned_vector(owned, comm);
-  GhostExchange                 exchange;
-  const auto report = [&](const std::string &what, const double error) {
+  LA::MPI::Vector owned_vector(owned, comm);
+  GhostExchange   exchange;
+  const auto      report = [&](const std::string &what, const double error) {
     if (rank == 0)
       std::printf("%s: largest error %s\n",
                   what.c_str(),
@@ -67,8 +68,8 @@ main(int argc, char **argv)
   const auto first  = [](const unsigned int i) { return i + 0.5; };
   const auto second = [](const unsigned int i) { return 2. * i + 0.25; };
 
-  IndexSet                      relevant = relevant_with_band(3);
-  TrilinosWrappers::MPI::Vector ghosted(owned, relevant, comm);
+  IndexSet        relevant = relevant_with_band(3);
+  LA::MPI::Vector ghosted(owned, relevant, comm);
   for (const auto i : owned)
     owned_vector[i] = first(i);
   owned_vector.compress(VectorOperation::insert);
@@ -83,15 +84,15 @@ main(int argc, char **argv)
          largest_error(ghosted, relevant, second, comm));
 
   relevant = relevant_with_band(7);
-  TrilinosWrappers::MPI::Vector wider(owned, relevant, comm);
+  LA::MPI::Vector wider(owned, relevant, comm);
   exchange.copy(owned_vector, wider);
   report("into a wider ghosted layout",
          largest_error(wider, relevant, second, comm));
 
   // A second owned vector, initialized on its own from the same index set,
   // copied into the same ghosted vector in turn with the first.
-  TrilinosWrappers::MPI::Vector other_owned(owned, comm);
-  const auto third = [](const unsigned int i) { return 3. * i - 1.; };
+  LA::MPI::Vector other_owned(owned, comm);
+  const auto      third = [](const unsigned int i) { return 3. * i - 1.; };
   for (const auto i : owned)
     other_owned[i] = third(i);
   other_owned.compress(VectorOperation::insert);
@@ -105,7 +106,7 @@ main(int argc, char **argv)
     }
   report("two owned vectors in turn", error);
 
-  TrilinosWrappers::MPI::Vector copy(owned, comm);
+  LA::MPI::Vector copy(owned, comm);
   copy_owned_values(other_owned, copy);
   error = 0.;
   for (const auto i : owned)

@@ -5,6 +5,7 @@
 // increments are recorded the degree is lowered, and degree 0 leaves the
 // previous increment as it is.
 #include <vpcontact/increment_predictor.h>
+#include <vpcontact/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -17,12 +18,12 @@ using namespace VPContact;
 namespace
 {
   // Two entries per step n: w_n = (f(n), 2 f(n)).
-  TrilinosWrappers::MPI::Vector
+  LA::MPI::Vector
   increment(const IndexSet                      &owned,
             const std::function<double(double)> &f,
             const int                            n)
   {
-    TrilinosWrappers::MPI::Vector w(owned, MPI_COMM_WORLD);
+    LA::MPI::Vector w(owned, MPI_COMM_WORLD);
     w(0) = f(n);
     w(1) = 2 * f(n);
     w.compress(VectorOperation::insert);
@@ -48,7 +49,7 @@ namespace
     for (int n = 1; n <= 5; ++n)
       {
         // The solver's vector holds w_{n-1} before the prediction.
-        TrilinosWrappers::MPI::Vector start = increment(owned, f, n - 1);
+        LA::MPI::Vector start = increment(owned, f, n - 1);
         predictor.predict(start);
         const double error
           = std::abs(start(0) - f(n)) + std::abs(start(1) - 2 * f(n));

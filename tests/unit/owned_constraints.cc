@@ -7,6 +7,7 @@
 // constraints read only owned entries and are applied in place; on 2 ranks
 // some hanging nodes read a neighbour's entries and distribute() runs. Either
 // way the result must be the same bits. A Dirichlet-only set is checked too.
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/owned_constraints.h>
 
 #include <deal.II/base/function.h>
@@ -27,9 +28,9 @@ namespace
 {
   // The largest |a_i - b_i| over the owned entries of all ranks.
   double
-  largest_difference(const TrilinosWrappers::MPI::Vector &a,
-                     const TrilinosWrappers::MPI::Vector &b,
-                     const MPI_Comm                       comm)
+  largest_difference(const LA::MPI::Vector &a,
+                     const LA::MPI::Vector &b,
+                     const MPI_Comm         comm)
   {
     double difference = 0.;
     for (unsigned int i = 0; i < a.locally_owned_size(); ++i)
@@ -79,7 +80,7 @@ main(int argc, char **argv)
     return constraints;
   };
 
-  TrilinosWrappers::MPI::Vector values(owned, comm);
+  LA::MPI::Vector values(owned, comm);
   for (const auto i : owned)
     values[i] = std::sin(0.37 * i) + 0.01 * i;
   values.compress(VectorOperation::insert);
@@ -96,8 +97,8 @@ main(int argc, char **argv)
   // Hanging nodes and Dirichlet: against distribute().
   {
     const AffineConstraints<double> constraints = build(true);
-    TrilinosWrappers::MPI::Vector   expected(values);
-    TrilinosWrappers::MPI::Vector   computed(values);
+    LA::MPI::Vector                 expected(values);
+    LA::MPI::Vector                 computed(values);
     constraints.distribute(expected);
     distribute_constraints(constraints, computed);
     report("hanging nodes and Dirichlet, against distribute()",
@@ -110,8 +111,8 @@ main(int argc, char **argv)
   // here on 2 ranks, where one rank holds no constraint.)
   {
     const AffineConstraints<double> constraints = build(false);
-    TrilinosWrappers::MPI::Vector   expected(values);
-    TrilinosWrappers::MPI::Vector   computed(values);
+    LA::MPI::Vector                 expected(values);
+    LA::MPI::Vector                 computed(values);
     for (const auto i : owned)
       if (constraints.is_constrained(i))
         expected[i] = 0.25;

@@ -2,6 +2,7 @@
 // matrix on the pattern of a distributed Q1 mesh, for x nonzero at a few
 // nodes (some of them next to another rank's nodes), at every node, and
 // zero; y is overwritten, not added to. Serial and on 2 ranks.
+#include <vpcontact/linear_algebra.h>
 #include <vpcontact/support_product.h>
 
 #include <deal.II/base/mpi.h>
@@ -36,7 +37,7 @@ main(int argc, char **argv)
   DynamicSparsityPattern pattern(relevant);
   DoFTools::make_sparsity_pattern(dof_handler, pattern);
   SparsityTools::distribute_sparsity_pattern(pattern, owned, comm, relevant);
-  TrilinosWrappers::SparseMatrix K;
+  LA::SparseMatrix K;
   K.reinit(owned, owned, pattern, comm);
   for (const auto i : owned)
     for (auto entry = pattern.begin(i); entry != pattern.end(i); ++entry)
@@ -52,8 +53,7 @@ main(int argc, char **argv)
   const unsigned int n = dof_handler.n_dofs();
   for (const unsigned int stride : {13u, 1u, 0u})
     {
-      TrilinosWrappers::MPI::Vector x(owned, comm), y(owned, comm),
-        expected(owned, comm);
+      LA::MPI::Vector x(owned, comm), y(owned, comm), expected(owned, comm);
       for (const auto i : owned)
         x(i) = (stride > 0 && i % stride == 0 ? 1. + 0.01 * i : 0.);
       x.compress(VectorOperation::insert);
