@@ -1,7 +1,7 @@
 // Test driver for input errors: runs the program on the given arguments and
 // turns "stopped with an error" into success, so that the test can compare
 // the error message. A scene that runs to the end is a test failure.
-#include <vpcontact/application.h>
+#include <vpcontact/app/application.h>
 
 #include <cstdlib>
 #include <iostream>

@@ -1,7 +1,7 @@
 // Unit test: the primal-dual active set decision for the damage bounds
 // [0, 1] (lambda = residual, c > 0): upper where lambda + c (zeta - 1) > 0,
 // lower where lambda + c zeta < 0, free otherwise.
-#include <vpcontact/damage_bounds.h>
+#include <vpcontact/damage/damage_bounds.h>
 
 #include <iostream>
 

@@ -7,8 +7,8 @@
 //    every quadrature point eps(u) = sym(A) and zeta = c . x_q exactly.
 //  * A random vector: strains, damage and the work of a random stress on
 //    the test functions agree with those of FEValues.
-#include <vpcontact/cell_kinematics.h>
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/fe/cell_kinematics.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>

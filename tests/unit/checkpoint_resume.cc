@@ -11,7 +11,7 @@
 // checkpoint on 2 ranks; the linear solves then differ at round-off, and
 // the results must agree to 1e-8 (the solver tolerance is 1e-12), the
 // active sets exactly.
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 

@@ -4,10 +4,10 @@
 #ifndef vpcontact_tests_checkpoint_runner_h
 #define vpcontact_tests_checkpoint_runner_h
 
-#include <vpcontact/checkpoint_fields.h>
-#include <vpcontact/geometry.h>
-#include <vpcontact/linear_algebra.h>
-#include <vpcontact/simulator.h>
+#include <vpcontact/checkpoint/checkpoint_fields.h>
+#include <vpcontact/problem_data/geometry.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/simulator/simulator.h>
 
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>

@@ -7,8 +7,8 @@
 // cells through the constraints, give what distribute_local_to_global
 // gives for all cells (to round-off), and the same bits with 1 and 2
 // threads; a new constraint makes the plan outdated.
-#include <vpcontact/conflict_free_chunks.h>
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/fe/conflict_free_chunks.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/multithread_info.h>

@@ -8,8 +8,8 @@
 // the matrix graph, on two from a matrix-vector product each (the rows cut
 // into halves between y = 8 and 9, so the rings cross to the other rank):
 // both must print the same.
-#include <vpcontact/damage_bounds.h>
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/damage/damage_bounds.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 

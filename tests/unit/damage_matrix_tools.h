@@ -3,7 +3,7 @@
 #ifndef vpcontact_tests_damage_matrix_tools_h
 #define vpcontact_tests_damage_matrix_tools_h
 
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>

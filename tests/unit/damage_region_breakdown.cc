@@ -7,8 +7,8 @@
 // 3, 4), with no node held and with node 1 held (then x_1 = 0 and the others
 // solve the 3 x 3 system of the free nodes); and for b = 0 it returns x = 0
 // without iterations.
-#include <vpcontact/damage_region_solver.h>
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/damage/damage_region_solver.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>

@@ -5,8 +5,8 @@
 // solved by the first CG iteration: the preconditioned residual of the zero
 // start vector is 1 itself, and its step length is 1. IC(0), which drops
 // its fill-in instead, needs more. Both converge to x = 1.
-#include <vpcontact/damage_region_solver.h>
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/damage/damage_region_solver.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 

@@ -8,8 +8,8 @@
 // preconditioner, whose CG runs on the transformed system, the coupling to
 // the other rank is a term of its own (K_off in solve_eisenstat()): with it
 // left out, this test fails on 2 ranks.
-#include <vpcontact/damage_region_solver.h>
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/damage/damage_region_solver.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 

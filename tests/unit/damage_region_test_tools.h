@@ -4,7 +4,7 @@
 #ifndef vpcontact_tests_damage_region_test_tools_h
 #define vpcontact_tests_damage_region_test_tools_h
 
-#include <vpcontact/damage_region_solver.h>
+#include <vpcontact/damage/damage_region_solver.h>
 
 #include "damage_matrix_tools.h"
 

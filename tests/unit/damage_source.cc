@@ -3,7 +3,7 @@
 // is 0.5 - 50 (0.01 + 0.0009 + 2 * 0.0004) = -0.085; the other variables
 // (zeta, stress components, energy = sigma:eps/2, von_mises, x, y, t) are
 // checked one by one, and an unknown name is refused with a message.
-#include <vpcontact/damage_source.h>
+#include <vpcontact/damage/damage_source.h>
 
 #include <deal.II/base/exceptions.h>
 

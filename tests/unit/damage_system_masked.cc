@@ -10,9 +10,9 @@
 // and from x* itself, for five held sets in turn (x < 0.4, 0.6, 0.1, and y <
 // 0.25, y > 0.51, which lie on part of the ranks only) with the same
 // preconditioner. The same on 2 and 3 ranks.
-#include <vpcontact/damage_system.h>
-#include <vpcontact/linear_algebra.h>
-#include <vpcontact/linear_solver.h>
+#include <vpcontact/damage/damage_system.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/linear_solver.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

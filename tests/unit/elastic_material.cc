@@ -3,7 +3,7 @@
 // mapped back to (s, 0, 0). Plane strain and 3D: a pure shear strain g gives
 // the stress 2 mu g, and the uniaxial strain e e_x gives
 // sigma_xx = (lambda + 2 mu) e with lambda = E nu / ((1 + nu)(1 - 2 nu)).
-#include <vpcontact/elastic_material.h>
+#include <vpcontact/material/elastic_material.h>
 
 #include <cstdio>
 

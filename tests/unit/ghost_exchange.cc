@@ -6,8 +6,8 @@
 // exchange must notice and build a new import. The exchange then serves two
 // owned vectors with layouts of their own in turn (it keeps both pairs), and
 // copy_owned_values() copies between two such owned vectors.
-#include <vpcontact/ghost_exchange.h>
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/linear_algebra/ghost_exchange.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 

@@ -4,8 +4,8 @@
 // step number, exactly; a polynomial of higher degree is missed. Until p + 1
 // increments are recorded the degree is lowered, and degree 0 leaves the
 // previous increment as it is.
-#include <vpcontact/increment_predictor.h>
-#include <vpcontact/linear_algebra.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/simulator/increment_predictor.h>
 
 #include <deal.II/base/mpi.h>
 

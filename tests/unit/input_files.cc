@@ -11,10 +11,10 @@
 //   or FOLDER.new, the output folder itself and the working directory are
 //   refused before the run, and the user's files are left unchanged; the
 //   program's own folders rotate as before.
-#include <vpcontact/checkpointing.h>
-#include <vpcontact/input_error.h>
-#include <vpcontact/output_writer.h>
-#include <vpcontact/parameter_file.h>
+#include <vpcontact/checkpoint/checkpointing.h>
+#include <vpcontact/input/input_error.h>
+#include <vpcontact/input/parameter_file.h>
+#include <vpcontact/postprocess/output_writer.h>
 
 #include <deal.II/base/mpi.h>
 

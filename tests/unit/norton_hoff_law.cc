@@ -6,7 +6,7 @@
 //   |s(t)|^(1-m) = |s_0|^(1-m) + (m - 1)(1 - zeta) A t.
 // Forward and backward Euler (implicit_stress_update) approach it at first
 // order in the time step.
-#include <vpcontact/norton_hoff_law.h>
+#include <vpcontact/material/norton_hoff_law.h>
 
 #include <cmath>
 #include <cstdio>

@@ -7,8 +7,8 @@
 // constraints read only owned entries and are applied in place; on 2 ranks
 // some hanging nodes read a neighbour's entries and distribute() runs. Either
 // way the result must be the same bits. A Dirichlet-only set is checked too.
-#include <vpcontact/linear_algebra.h>
-#include <vpcontact/owned_constraints.h>
+#include <vpcontact/fe/owned_constraints.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/distributed/tria.h>

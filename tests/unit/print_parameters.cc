@@ -2,8 +2,8 @@
 // listing of every declared entry (2D and 3D) is read back by a fresh
 // ParameterHandler without error, and every section named in the
 // documentation is there.
-#include <vpcontact/parameter_listing.h>
-#include <vpcontact/simulator.h>
+#include <vpcontact/input/parameter_listing.h>
+#include <vpcontact/simulator/simulator.h>
 
 #include <iostream>
 #include <sstream>

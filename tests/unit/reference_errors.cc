@@ -4,7 +4,7 @@
 // the same plus a known perturbation: the errors are 0, or the norms of the
 // perturbation (sqrt(2) |perturbation| on an area of 2). A reference that
 // does not cover the run, or lies elsewhere, is refused.
-#include <vpcontact/reference_solution.h>
+#include <vpcontact/postprocess/reference_solution.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

@@ -4,7 +4,7 @@
 #ifndef vpcontact_tests_scene_runner_h
 #define vpcontact_tests_scene_runner_h
 
-#include <vpcontact/simulator.h>
+#include <vpcontact/simulator/simulator.h>
 
 #include <deal.II/base/utilities.h>
 

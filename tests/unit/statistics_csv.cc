@@ -1,7 +1,7 @@
 // Unit test: the statistics table as CSV. Columns keep the order of first
 // use, a row without a value leaves the cell empty, numbers keep 10
 // significant digits.
-#include <vpcontact/statistics.h>
+#include <vpcontact/postprocess/statistics.h>
 
 #include <iostream>
 

@@ -1,7 +1,7 @@
 // Unit test: the von Mises norm. Uniaxial stress s gives |s|; pure shear tau
 // gives sqrt(3) |tau|; a hydrostatic 3D state gives 0; in 2D the equibiaxial
 // plane stress state (s, s) gives |s| (s_zz = 0 is part of the deviator).
-#include <vpcontact/stress_measures.h>
+#include <vpcontact/material/stress_measures.h>
 
 #include <cstdio>
 

@@ -2,8 +2,8 @@
 // matrix on the pattern of a distributed Q1 mesh, for x nonzero at a few
 // nodes (some of them next to another rank's nodes), at every node, and
 // zero; y is overwritten, not added to. Serial and on 2 ranks.
-#include <vpcontact/linear_algebra.h>
-#include <vpcontact/support_product.h>
+#include <vpcontact/damage/support_product.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>

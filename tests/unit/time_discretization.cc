@@ -1,7 +1,7 @@
 // Unit test: the uniform time grid. T = 1, k = 0.1 has N = 10 steps (1/0.1 is
 // not exactly 10 in binary) and t_N is exactly T; T = 1, k = 0.3 is refused
 // with a message naming Time/Time step.
-#include <vpcontact/time_discretization.h>
+#include <vpcontact/simulator/time_discretization.h>
 
 #include <deal.II/base/exceptions.h>
 

@@ -6,7 +6,7 @@
 // lambda = g n + beta (I - n n^T) w. On a line (one tangent direction) this
 // is the sign switch lambda = g sign(w); in the tangent plane of a 3D
 // contact surface it is the ball |lambda| <= g.
-#include <vpcontact/tresca_friction.h>
+#include <vpcontact/contact/tresca_friction.h>
 
 #include <iostream>
 

@@ -3,7 +3,7 @@
 // sound material (zeta = 1) and is -Phi_L(sigma) for zeta = 0; Maxwell is
 // -sigma/eta, truncated -Phi_L(sigma)/eta; the explicit step limits are
 // 2 eta for Maxwell, 2 for the paper's law, none for G = 0.
-#include <vpcontact/viscoplastic_law.h>
+#include <vpcontact/material/viscoplastic_law.h>
 
 #include <iostream>
 

@@ -7,7 +7,7 @@
 // reach every rank. Each write is made to fail with a folder in the way of
 // its temporary file (as root, permissions would not stop it). Serial and on
 // 2 ranks.
-#include <vpcontact/output_writer.h>
+#include <vpcontact/postprocess/output_writer.h>
 
 #include <deal.II/base/mpi.h>
 

@@ -1,0 +1,160 @@
+// The Tresca friction problem on the contact boundary: its active set, the
+// residual that gives the friction multipliers, and what a run reports of
+// it. Built only in scenes with a friction bound g > 0.
+#ifndef vpcontact_friction_problem_h
+#define vpcontact_friction_problem_h
+
+#include <vpcontact/contact/friction_active_set.h>
+#include <vpcontact/contact/tresca_friction.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/postprocess/statistics.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * Tresca friction with bilateral contact, solved by the primal-dual
+   * active set of step-41/42 around the displacement solves: the stick and
+   * slip sets (FrictionActiveSet), the cells that hold a contact node (where
+   * the residual r = b - A(du) is assembled: its tangential part at a
+   * contact node is the friction multiplier), and the iteration counts and
+   * violations a run reports. The simulator owns the displacement problem
+   * and calls begin_step(), then, after each solve, update() until no node
+   * changes set.
+   */
+  template <int dim>
+  class FrictionProblem
+  {
+  public:
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+    /// Assembles r on the given cells into the vector (with ghost entries).
+    using ResidualAssembler
+      = std::function<void(const std::vector<CellIterator> &,
+                           LA::MPI::Vector &)>;
+
+    FrictionProblem(const TrescaFriction<dim> &friction,
+                    const MPI_Comm             communicator);
+
+    /**
+     * On a new mesh: the contact nodes from @p base_constraints (without
+     * friction, closed), all in the stick set, and the contact cells.
+     */
+    void
+    setup(const DoFHandler<dim>              &dof_handler,
+          const AffineConstraints<double>    &base_constraints,
+          const std::set<types::boundary_id> &contact_boundary_ids,
+          const IndexSet                     &locally_owned_dofs,
+          const IndexSet                     &locally_relevant_dofs);
+
+    /// Forget the sets of an earlier mesh and the counters of a run.
+    void
+    clear();
+
+    /// The stick nodes' tangential constraints.
+    void
+    add_stick_constraints(AffineConstraints<double> &constraints) const;
+
+    /// The friction bounds at @p time; no iteration yet.
+    void
+    begin_step(const double time);
+
+    /// The slip nodes' forces -m g n into @p rhs.
+    void
+    add_slip_forces(const AffineConstraints<double> &constraints,
+                    LA::MPI::Vector                 &rhs) const;
+
+    /// The slip nodes' stiffness (3D) into @p matrix, before compress().
+    void
+    add_slip_stiffness(const AffineConstraints<double> &constraints,
+                       LA::SparseMatrix                &matrix);
+
+    /// The change of the slip nodes' stiffness since the matrix was last
+    /// given it, after an update() that changed no set; compresses it.
+    void
+    update_slip_stiffness(const AffineConstraints<double> &constraints,
+                          LA::SparseMatrix                &matrix);
+
+    /**
+     * One active-set iteration after a solve: the residual by
+     * @p assemble_residual, the multipliers, the next sets.
+     */
+    typename FrictionActiveSet<dim>::Changes
+    update(const LA::MPI::Vector   &increment,
+           const double             youngs_modulus,
+           const ResidualAssembler &assemble_residual);
+
+    /**
+     * Record what the constraints without any stick node leave free (a
+     * rigid motion, in words; empty if they hold the body): the motion the
+     * body is free to make when every contact node slips.
+     */
+    void
+    set_motion_free_when_all_slip(const std::string &motion);
+
+    /// The motion set_motion_free_when_all_slip() recorded.
+    const std::string &
+    motion_free_when_all_slip() const;
+
+    /// The number of stick nodes (all ranks).
+    unsigned int
+    n_stick_nodes() const;
+
+    /// The largest friction bound at the contact nodes in this step (all
+    /// ranks).
+    double
+    max_bound() const;
+
+    /// The iterations of the current step.
+    unsigned int
+    iterations() const;
+
+    /// The step's friction columns of @p statistics and its part of the
+    /// screen @p line.
+    void
+    add_statistics(Statistics &statistics, std::string &line);
+
+    /// The largest violation of the Tresca conditions so far (of max g).
+    double
+    max_violation() const;
+
+    /// Status and tangential traction of the contact nodes, for output.
+    void
+    fill_output(LA::MPI::Vector &status, LA::MPI::Vector &traction) const;
+
+    /// The sets into @p state and the counters a resumed run needs.
+    void
+    write_checkpoint(LA::MPI::Vector               &state,
+                     std::map<std::string, double> &counters) const;
+
+    /// The state write_checkpoint() saved (@p state ghosted).
+    void
+    read_checkpoint(const LA::MPI::Vector                            &state,
+                    const std::function<double(const std::string &)> &counter);
+
+  private:
+    const TrescaFriction<dim> &friction;
+    const MPI_Comm             communicator;
+    FrictionActiveSet<dim>     active_set;
+    /// The locally owned cells with a contact node, where r is assembled.
+    std::vector<CellIterator> contact_cells;
+    /// r as assembled (with ghost entries), and a ghosted copy.
+    LA::MPI::Vector residual_assembly;
+    LA::MPI::Vector residual;
+    unsigned int    last_iterations   = 0;
+    double          largest_violation = 0;
+    std::string     free_when_all_slip;
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,206 @@
+// The bounds 0 <= zeta <= 1 of the damage, enforced exactly by a primal-dual
+// active set on the nodal values (step-41's obstacle method, two-sided).
+#ifndef vpcontact_damage_bounds_h
+#define vpcontact_damage_bounds_h
+
+#include <vpcontact/linear_algebra/linear_algebra.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <utility>
+#include <vector>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /// Where a nodal damage value is: at a bound, or free between them.
+  enum class BoundStatus
+  {
+    lower = -1, // zeta = 0, fully damaged
+    free  = 0,
+    upper = 1 // zeta = 1, sound
+  };
+
+  /**
+   * The primal-dual active set decision for one node of the box [0, 1].
+   * With lambda = (b - K zeta)_i the residual (the multiplier: lambda > 0
+   * pushes up against 1, lambda < 0 down against 0) and c > 0, the
+   * conditions 0 <= zeta <= 1, lambda (zeta - 1) = 0 where lambda > 0,
+   * lambda zeta = 0 where lambda < 0 are equivalent to
+   *   lambda = max(0, lambda + c (zeta - 1)) + min(0, lambda + c zeta),
+   * whose semismooth Newton step is: upper where lambda + c (zeta - 1) > 0,
+   * lower where lambda + c zeta < 0, free elsewhere.
+   *
+   * A node whose multiplier is zero at the bound (weakly active) would flip
+   * between two sets on round-off alone; with @p tolerance > 0 a node
+   * leaves its @p current set only if the test is violated by more than
+   * @p tolerance (in units of lambda), which ends such cycles.
+   */
+  BoundStatus
+  box_decision(const double      lambda,
+               const double      zeta,
+               const double      c,
+               const BoundStatus current   = BoundStatus::free,
+               const double      tolerance = 0.);
+
+  /**
+   * The active sets of the damage bounds on the locally relevant damage
+   * degrees of freedom. Decisions are taken on every relevant node from
+   * ghosted vectors (the same on every rank that sees it); changes are
+   * counted on owned nodes and summed over the ranks.
+   */
+  class DamageBounds
+  {
+  public:
+    /**
+     * @p damage_dofs are the locally relevant damage degrees of freedom
+     * that carry bounds (indices into the vectors passed to the other
+     * functions), @p lumped_mass a ghosted vector of the lumped masses m_i.
+     * All nodes start free.
+     */
+    void
+    setup(const IndexSet        &damage_dofs,
+          const IndexSet        &locally_owned_dofs,
+          const LA::MPI::Vector &lumped_mass,
+          const MPI_Comm         communicator);
+
+    /**
+     * The owned nodes of the active sets with the change of the damage that
+     * puts them on their bound: their positions among the owned entries
+     * are appended to @p held, and @p change gets 1 - zeta_old at those of
+     * the upper set and -zeta_old at those of the lower one (its other
+     * entries are left alone), zeta_old read from @p old_damage. Both
+     * vectors hold the owned entries.
+     */
+    void
+    held_changes(const LA::MPI::Vector     &old_damage,
+                 std::vector<unsigned int> &held,
+                 LA::MPI::Vector           &change) const;
+
+    /**
+     * The scale c_i of the complementarity test of update(): the ghosted
+     * @p diagonal of the damage matrix, K_ii = m_i/k + kappa A_ii (laid out
+     * like the lumped mass). Without it, update() takes c_i = m_i/k, which
+     * is too small beside kappa A_ii where kappa k / h^2 is large: the sets
+     * then trade nodes between iterations instead of settling.
+     */
+    void
+    set_complementarity_scale(const LA::MPI::Vector &diagonal);
+
+    /**
+     * The next sets from the ghosted @p residual and @p damage (laid out
+     * like the lumped mass given to setup()), with the scale c_i of
+     * set_complementarity_scale() (or m_i / k, the diagonal of M/k) and the
+     * hysteresis tolerance 1e-9 c (a change of the damage of 1e-9, far
+     * below anything the model resolves). Returns the number of nodes that
+     * changed set, on all ranks.
+     */
+    unsigned int
+    update(const LA::MPI::Vector &residual,
+           const LA::MPI::Vector &damage,
+           const double           time_step);
+
+    /**
+     * The motion of the front of the upper set (ζ = 1) over a step, in
+     * rings of nodes. begin_step() records the upper set and the number of
+     * its nodes on the front (those with a neighbour below 1: an entry of
+     * @p matrix, the damage matrix in the numbering of the bounds);
+     * rings_moved() returns the number of nodes that have left the upper
+     * set since, divided by that front size.
+     */
+    void
+    begin_step(const LA::SparseMatrix &matrix);
+
+    double
+    rings_moved() const;
+
+    /**
+     * Free the nodes of the upper set within @p rings rings of the nodes
+     * below 1. Returns the number of nodes freed, on all ranks.
+     *
+     * Why: a node leaves the upper set only once its multiplier turns
+     * negative, which needs a free neighbour, so every semismooth Newton
+     * iteration moves the front by one ring, and a step moves it by more
+     * rings the finer the mesh. Freed ahead of time, by as many rings as the
+     * front moved in the previous step, the nodes that should stay at 1 come
+     * out above 1 in the next solve and go back in one iteration (a local
+     * test); the sets found at the end are the exact ones, confirmed by an
+     * exact solve as always.
+     */
+    unsigned int
+    free_ahead_of_front(const LA::SparseMatrix &matrix,
+                        const unsigned int      rings);
+
+    /// The sets of all nodes, to go back to with restore_sets().
+    const std::vector<BoundStatus> &
+    sets() const;
+
+    /// Go back to the sets @p saved of sets(), taken after begin_step().
+    void
+    restore_sets(const std::vector<BoundStatus> &saved);
+
+    /// Global sizes of the lower and upper sets.
+    std::pair<unsigned int, unsigned int>
+    count() const;
+
+    /// For checkpoints: write the set of every owned node (-1 lower, 0
+    /// free, 1 upper) into its entry of @p state (a vector on all dofs).
+    void
+    write_state(LA::MPI::Vector &state) const;
+
+    /// The inverse of write_state(), from a ghosted @p state, for every
+    /// relevant node. Throws if a value is not a set.
+    void
+    read_state(const LA::MPI::Vector &state);
+
+  private:
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  mass;
+    /// c_i of set_complementarity_scale() (empty: m_i / k).
+    std::vector<double> scale;
+    std::vector<bool>   owned;
+    /// Positions of the nodes in the local storage of a ghosted vector laid
+    /// out like the lumped mass (n_ghosted entries), and among the owned
+    /// entries (owned nodes only).
+    std::vector<unsigned int> ghosted_position;
+    std::vector<unsigned int> owned_position;
+    int                       n_ghosted = 0;
+    std::vector<BoundStatus>  status;
+    std::vector<bool>         upper_at_start;
+    unsigned int              front_size = 0;
+
+    /// The owned upper nodes with a neighbour below 1 (see
+    /// front_by_product() and front_by_graph()).
+    std::vector<unsigned int>
+    front(const LA::SparseMatrix &matrix);
+
+    /// front() on several ranks: one matrix-vector product with @p matrix.
+    std::vector<unsigned int>
+    front_by_product(const LA::SparseMatrix &matrix) const;
+
+    /// front() on one rank: a pass over the rows of the upper nodes of
+    /// the graph of @p matrix (kept from the first call after setup()).
+    std::vector<unsigned int>
+    front_by_graph(const LA::SparseMatrix &matrix);
+
+    /// On one rank: the upper nodes next to the nodes of @p ring, which
+    /// are free; they are freed too.
+    std::vector<unsigned int>
+    free_next_ring(const std::vector<unsigned int> &ring);
+
+    /// The marks of front_by_product() and their product with the matrix,
+    /// kept.
+    mutable LA::MPI::Vector front_marks;
+    mutable LA::MPI::Vector front_reach;
+    /// One rank: the neighbours of each node in the matrix graph (entries
+    /// that are not zero, the node itself left out), in CSR over the nodes.
+    std::vector<unsigned int> neighbour_start;
+    std::vector<unsigned int> neighbour;
+    MPI_Comm                  communicator = MPI_COMM_WORLD;
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,159 @@
+// The linear solver of the displacement system, section "Solver": the
+// package, the method and the tolerance, with the preconditioner or the
+// factorization built once per matrix and reused by every step.
+#ifndef vpcontact_linear_solver_h
+#define vpcontact_linear_solver_h
+
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/spd_solver.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <functional>
+#include <future>
+#include <memory>
+#include <string>
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * Section "Solver": solves K x = b for the symmetric positive definite
+   * displacement matrix K with the package and method the parameter file
+   * names (see SpdSolver).
+   *
+   * The matrix of the paper's velocity problem is constant while the mesh,
+   * the time step and the stick set are fixed, so the preconditioner or the
+   * factorization is built once in initialize() and reused by every solve().
+   */
+  class LinearSolver
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Build the preconditioner or factorization of @p matrix (which it
+     * refers to until clear() or the next initialize()); @p near_null_space
+     * are the rigid motions, for AMG.
+     */
+    void
+    initialize(const LA::SparseMatrix &matrix,
+               const NearNullSpace    &near_null_space);
+
+    /// Release the preconditioner or factorization (before the matrix it
+    /// refers to is re-initialised or destroyed).
+    void
+    clear();
+
+    /**
+     * Solve K x = b. @p x is the start vector for CG. Returns the number of
+     * iterations (1 for a factorization, 0 for b = 0). Throws with a message
+     * naming the Solver parameters to change when CG does not reach the
+     * tolerance.
+     */
+    unsigned int
+    solve(LA::MPI::Vector &x, const LA::MPI::Vector &b);
+
+    /**
+     * Whether solve_in_background() may be called: the factors of
+     * Solver/Linear solver = Cholesky (one process) for the matrix as it
+     * was given to initialize(). After matrix_changed() a solve is CG on
+     * the changed matrix, which is left to solve().
+     */
+    bool
+    solves_in_background() const;
+
+    /**
+     * solve() with its substitutions in a second thread, so that the
+     * caller can work beside them: the future's get() returns the number of
+     * iterations (1, or 0 for b = 0) and rethrows what the solve threw.
+     * The checks of @p b (finite, its norm) run in the calling thread
+     * before it returns, since they may call MPI; the second thread only
+     * calls the factors' substitutions (CHOLMOD, no MPI). Until get()
+     * returns, @p x, @p b and the factors belong to the second thread: the
+     * caller must not touch the vectors nor call a function of this solver
+     * that is not const (the const ones, such as tolerance(), read only
+     * what the second thread does not write). @p then, if given, runs in
+     * the second thread after the substitutions, with @p x solved (the
+     * caller's work that only needs x); it must not call MPI.
+     */
+    std::future<unsigned int>
+    solve_in_background(LA::MPI::Vector             &x,
+                        const LA::MPI::Vector       &b,
+                        const std::function<void()> &then = {});
+
+    /**
+     * The matrix given to initialize() changed in place by a little (the
+     * slip stiffness of a friction iteration). Later solves run deal.II's CG
+     * on the changed matrix, preconditioned by the preconditioner or the
+     * factors built for it in initialize(), until the next initialize(); a
+     * solve where that does not converge within a few times the iterations
+     * of a fresh solve builds them anew for the changed matrix and solves
+     * with those.
+     */
+    void
+    matrix_changed();
+
+    /// Whether a solve after matrix_changed() needed so many more
+    /// iterations than the solves before it that initialize() pays off.
+    bool
+    preconditioner_outdated() const;
+
+    /// One application of the preconditioner or one solve with the factors.
+    void
+    precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src);
+
+    /// Whether the method is a factorization.
+    bool
+    is_direct() const;
+
+    /// The package of Solver/Linear algebra, for the damage solves, which
+    /// use the same one.
+    LinearAlgebra
+    package() const;
+
+    double
+    tolerance() const;
+
+    unsigned int
+    iteration_limit() const;
+
+  private:
+    LinearAlgebra              linear_algebra     = LinearAlgebra::trilinos;
+    SpdMethod                  method             = SpdMethod::cg_amg;
+    double                     relative_tolerance = 1e-10;
+    unsigned int               max_iterations     = 1000;
+    std::unique_ptr<SpdSolver> solver;
+    /// The matrix of initialize(), and whether it changed since.
+    const LA::SparseMatrix *matrix                   = nullptr;
+    bool                    changed_since_initialize = false;
+    /// Iterations of the last solve before and after the matrix changed.
+    unsigned int iterations_before = 0;
+    unsigned int iterations_after  = 0;
+
+    /// AMG's near null space, kept for a rebuild after matrix_changed().
+    NearNullSpace kept_null_space;
+
+    /// |b|, after checking that @p b is finite.
+    static double
+    checked_norm(const LA::MPI::Vector &b);
+
+    /// CG on the changed matrix with the old preconditioner; false (and
+    /// @p x unchanged) where it does not converge within a few times the
+    /// iterations of a fresh solve.
+    bool
+    solve_changed_matrix(LA::MPI::Vector       &x,
+                         const LA::MPI::Vector &b,
+                         const double           tolerance,
+                         unsigned int          &iterations);
+  };
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,81 @@
+// The bridge from the program's Trilinos matrices and vectors to PETSc: a
+// checked call macro whose message says what PETSc said (and where
+// PETSC_OPTIONS is set, that it may be the cause), the check of
+// PETSC_OPTIONS before PETSc starts, and the copies of a matrix and of
+// vector entries.
+#ifndef vpcontact_petsc_tools_h
+#define vpcontact_petsc_tools_h
+
+#include <vpcontact/linear_algebra/linear_algebra.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <petscmat.h>
+#include <string>
+
+// Every PETSc call returns an error code; a failed one stops the run with
+// the call's text and PETSc's own words (petsc_failure_message()).
+#define VPContactPetsc(call)                                                   \
+  do                                                                           \
+    {                                                                          \
+      const PetscErrorCode vpcontact_petsc_error = (call);                     \
+      AssertThrow(vpcontact_petsc_error == 0,                                  \
+                  dealii::ExcMessage(                                          \
+                    VPContact::petsc_failure_message(#call,                    \
+                                                     vpcontact_petsc_error))); \
+  } while (false)
+
+namespace VPContact
+{
+  using namespace dealii;
+
+  /**
+   * What is wrong with the environment variable PETSC_OPTIONS that PETSc
+   * cannot survive while it starts (an -options_file that cannot be read
+   * makes PetscInitialize() abort the program), or an empty string. To be
+   * asked before MPI and PETSc start.
+   */
+  std::string
+  petsc_options_problem();
+
+  /**
+   * Replace PETSc's error handler, which prints some thirty lines of
+   * traceback and configuration for every failed call, by one that keeps
+   * the first line of the error for petsc_failure_message(). After PETSc
+   * started.
+   */
+  void
+  install_petsc_error_messages();
+
+  /**
+   * The message for the failed PETSc call @p call with @p code: PETSc's
+   * own description and, if PETSC_OPTIONS is set, its value and what to do
+   * about it (options prefixed vpcontact_ reach the program's solvers, so
+   * an unknown type or an unreadable value there fails in them).
+   */
+  std::string
+  petsc_failure_message(const std::string &call, const PetscErrorCode code);
+
+  /**
+   * The owned rows of a Trilinos matrix as a symmetric PETSc AIJ matrix with
+   * the same rows on each rank (both take them in the order of the global
+   * indices) and with the block size @p dofs_per_node, which GAMG
+   * aggregates together. The caller destroys it.
+   */
+  Mat
+  copy_to_petsc(const LA::SparseMatrix &matrix,
+                const unsigned int      dofs_per_node);
+
+  /// The owned entries of @p from into the PETSc vector @p to of the same
+  /// layout.
+  void
+  copy_to_petsc(const LA::MPI::Vector &from, Vec to);
+
+  /// The owned entries of the PETSc vector @p from into @p to.
+  void
+  copy_from_petsc(Vec from, LA::MPI::Vector &to);
+} // namespace VPContact
+
+#endif

@@ -1,0 +1,259 @@
+// The Tresca friction problem: contact cells, the active-set update from the
+// residual, statistics and the checkpointed state.
+#include <vpcontact/contact/friction_problem.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace VPContact
+{
+  template <int dim>
+  FrictionProblem<dim>::FrictionProblem(const TrescaFriction<dim> &friction,
+                                        const MPI_Comm             communicator)
+    : friction(friction)
+    , communicator(communicator)
+  {}
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::clear()
+  {
+    active_set = FrictionActiveSet<dim>();
+    contact_cells.clear();
+    last_iterations   = 0;
+    largest_violation = 0;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::setup(
+    const DoFHandler<dim>              &dof_handler,
+    const AffineConstraints<double>    &base_constraints,
+    const std::set<types::boundary_id> &contact_boundary_ids,
+    const IndexSet                     &locally_owned_dofs,
+    const IndexSet                     &locally_relevant_dofs)
+  {
+    active_set.setup(dof_handler,
+                     base_constraints,
+                     contact_boundary_ids,
+                     locally_relevant_dofs);
+
+    // The multipliers are read at the contact nodes only, so the residual
+    // is assembled only on the cells that hold one.
+    contact_cells.clear();
+    const IndexSet contact_dofs = active_set.node_dofs(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dof_indices(
+      dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dof_indices);
+          if (std::any_of(dof_indices.begin(),
+                          dof_indices.end(),
+                          [&](const auto dof) {
+                            return contact_dofs.is_element(dof);
+                          }))
+            contact_cells.push_back(cell);
+        }
+    residual_assembly.reinit(locally_owned_dofs,
+                             locally_relevant_dofs,
+                             communicator,
+                             true);
+    residual.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::add_stick_constraints(
+    AffineConstraints<double> &constraints) const
+  {
+    active_set.add_stick_constraints(constraints);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::begin_step(const double time)
+  {
+    active_set.set_bounds(friction, time);
+    last_iterations = 0;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::add_slip_forces(
+    const AffineConstraints<double> &constraints,
+    LA::MPI::Vector                 &rhs) const
+  {
+    active_set.add_slip_forces(constraints, rhs);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::add_slip_stiffness(
+    const AffineConstraints<double> &constraints,
+    LA::SparseMatrix                &matrix)
+  {
+    active_set.add_slip_stiffness(constraints, matrix);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::update_slip_stiffness(
+    const AffineConstraints<double> &constraints,
+    LA::SparseMatrix                &matrix)
+  {
+    active_set.update_slip_stiffness(constraints, matrix);
+  }
+
+
+
+  template <int dim>
+  typename FrictionActiveSet<dim>::Changes
+  FrictionProblem<dim>::update(const LA::MPI::Vector   &increment,
+                               const double             youngs_modulus,
+                               const ResidualAssembler &assemble_residual)
+  {
+    ++last_iterations;
+    residual_assembly = 0.;
+    assemble_residual(contact_cells, residual_assembly);
+    residual_assembly.compress(VectorOperation::add);
+    residual = residual_assembly;
+    return active_set.update(residual,
+                             increment,
+                             youngs_modulus,
+                             friction.complementarity_factor(),
+                             friction.direction_tolerance());
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::set_motion_free_when_all_slip(const std::string &motion)
+  {
+    free_when_all_slip = motion;
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  FrictionProblem<dim>::motion_free_when_all_slip() const
+  {
+    return free_when_all_slip;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FrictionProblem<dim>::n_stick_nodes() const
+  {
+    return active_set.count().first;
+  }
+
+
+
+  template <int dim>
+  double
+  FrictionProblem<dim>::max_bound() const
+  {
+    return active_set.max_bound();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FrictionProblem<dim>::iterations() const
+  {
+    return last_iterations;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::add_statistics(Statistics  &statistics,
+                                       std::string &line)
+  {
+    const auto [n_stick, n_slip] = active_set.count();
+    const double utilisation     = active_set.max_utilisation();
+    // Relative to the largest g; slip counts where |w_i| exceeds 1e-8 of
+    // the largest tangential increment.
+    const double violation = active_set.max_violation(1e-8);
+    statistics.add_value("active_set_iterations", last_iterations);
+    statistics.add_value("stick_nodes", n_stick);
+    statistics.add_value("slip_nodes", n_slip);
+    statistics.add_value("friction_utilisation", utilisation);
+    statistics.add_value("friction_violation", violation);
+    largest_violation = std::max(largest_violation, violation);
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4f", utilisation);
+    line += "  stick/slip = " + std::to_string(n_stick) + "/"
+            + std::to_string(n_slip) + "  max|sigma_t|/g = " + text;
+  }
+
+
+
+  template <int dim>
+  double
+  FrictionProblem<dim>::max_violation() const
+  {
+    return largest_violation;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::fill_output(LA::MPI::Vector &status,
+                                    LA::MPI::Vector &traction) const
+  {
+    active_set.fill_output(status, traction);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::write_checkpoint(
+    LA::MPI::Vector               &state,
+    std::map<std::string, double> &counters) const
+  {
+    active_set.write_state(state);
+    counters["max_friction_violation"] = largest_violation;
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::read_checkpoint(
+    const LA::MPI::Vector                            &state,
+    const std::function<double(const std::string &)> &counter)
+  {
+    active_set.read_state(state);
+    largest_violation = counter("max_friction_violation");
+  }
+
+
+
+  template class FrictionProblem<2>;
+  template class FrictionProblem<3>;
+} // namespace VPContact

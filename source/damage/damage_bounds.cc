@@ -1,0 +1,356 @@
+// The primal-dual active set for the damage bounds [0, 1].
+#include <vpcontact/damage/damage_bounds.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+
+namespace VPContact
+{
+  BoundStatus
+  box_decision(const double      lambda,
+               const double      zeta,
+               const double      c,
+               const BoundStatus current,
+               const double      tolerance)
+  {
+    // Entering a set needs the test to hold by more than the tolerance;
+    // staying in it, only not to fail by more than the tolerance.
+    const double upper_margin
+      = (current == BoundStatus::upper ? -tolerance : tolerance);
+    const double lower_margin
+      = (current == BoundStatus::lower ? -tolerance : tolerance);
+    if (lambda + c * (zeta - 1.) > upper_margin)
+      return BoundStatus::upper;
+    if (lambda + c * zeta < -lower_margin)
+      return BoundStatus::lower;
+    return BoundStatus::free;
+  }
+
+
+
+  void
+  DamageBounds::setup(const IndexSet        &damage_dofs,
+                      const IndexSet        &locally_owned_dofs,
+                      const LA::MPI::Vector &lumped_mass,
+                      const MPI_Comm         mpi_communicator)
+  {
+    // Where each node sits in the local storage of a ghosted vector laid
+    // out like @p lumped_mass, and of an owned one: update() and
+    // held_changes() run after every damage solve over all nodes, and a
+    // Trilinos vector read by global index costs a hash lookup per entry.
+    communicator = mpi_communicator;
+    dofs.clear();
+    mass.clear();
+    scale.clear();
+    owned.clear();
+    ghosted_position.clear();
+    owned_position.clear();
+    const Epetra_BlockMap &ghosted_map = lumped_mass.trilinos_vector().Map();
+    n_ghosted                          = ghosted_map.NumMyElements();
+    for (const auto dof : damage_dofs)
+      {
+        dofs.push_back(dof);
+        mass.push_back(lumped_mass(dof));
+        owned.push_back(locally_owned_dofs.is_element(dof));
+        ghosted_position.push_back(
+          ghosted_map.LID(static_cast<TrilinosWrappers::types::int_type>(dof)));
+        owned_position.push_back(
+          owned.back() ? locally_owned_dofs.index_within_set(dof) : 0);
+      }
+    status.assign(dofs.size(), BoundStatus::free);
+    upper_at_start.assign(dofs.size(), false);
+    front_size = 0;
+    neighbour_start.clear();
+    neighbour.clear();
+  }
+
+
+
+  void
+  DamageBounds::held_changes(const LA::MPI::Vector     &old_damage,
+                             std::vector<unsigned int> &held,
+                             LA::MPI::Vector           &change) const
+  {
+    const double *old_values    = old_damage.begin();
+    double       *change_values = change.begin();
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i] && status[i] != BoundStatus::free)
+        {
+          const unsigned int position = owned_position[i];
+          held.push_back(position);
+          change_values[position] = (status[i] == BoundStatus::upper ? 1. : 0.)
+                                    - old_values[position];
+        }
+  }
+
+
+
+  void
+  DamageBounds::set_complementarity_scale(const LA::MPI::Vector &diagonal)
+  {
+    scale.resize(dofs.size());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      scale[i] = diagonal(dofs[i]);
+  }
+
+
+
+  unsigned int
+  DamageBounds::update(const LA::MPI::Vector &residual,
+                       const LA::MPI::Vector &damage,
+                       const double           time_step)
+  {
+    AssertThrow(residual.trilinos_vector().Map().NumMyElements() == n_ghosted
+                  && damage.trilinos_vector().Map().NumMyElements()
+                       == n_ghosted,
+                ExcInternalError("DamageBounds::update() needs ghosted "
+                                 "vectors laid out like the lumped mass."));
+    const double *residual_values = residual.begin();
+    const double *damage_values   = damage.begin();
+    unsigned int  n_changed       = 0;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        // Weakly active nodes: a hysteresis of 1e-9 in units of zeta.
+        constexpr double   hysteresis = 1e-9;
+        const double       c = (scale.empty() ? mass[i] / time_step : scale[i]);
+        const unsigned int position = ghosted_position[i];
+        const BoundStatus  next     = box_decision(residual_values[position],
+                                              damage_values[position],
+                                              c,
+                                              status[i],
+                                              hysteresis * c);
+        if (owned[i] && next != status[i])
+          ++n_changed;
+        status[i] = next;
+      }
+    return Utilities::MPI::sum(n_changed, communicator);
+  }
+
+
+
+  std::vector<unsigned int>
+  DamageBounds::front(const LA::SparseMatrix &matrix)
+  {
+    return (Utilities::MPI::n_mpi_processes(communicator) == 1 ?
+              front_by_graph(matrix) :
+              front_by_product(matrix));
+  }
+
+
+
+  std::vector<unsigned int>
+  DamageBounds::front_by_product(const LA::SparseMatrix &matrix) const
+  {
+    // With marks m = 1 on the nodes below 1, (K m)_i sums the entries K_ij
+    // of the marked neighbours j of node i. Where kappa A is an M-matrix
+    // (Q1 cells of aspect ratio up to about 1.4) these are negative, so the
+    // sum is nonzero exactly on the neighbours; elsewhere a neighbour may
+    // be missed, which costs only the iteration this was to save. The
+    // product also reaches across ranks. The two vectors are kept (fresh ones
+    // cost their page faults at every call, two or more per step) and are read
+    // and written by position.
+    const IndexSet owned_rows = matrix.locally_owned_domain_indices();
+    if (front_marks.size() != matrix.n()
+        || front_marks.locally_owned_elements() != owned_rows)
+      {
+        front_marks.reinit(owned_rows, communicator);
+        front_reach.reinit(owned_rows, communicator);
+      }
+    front_marks         = 0.;
+    double *const marks = front_marks.begin();
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i] && status[i] != BoundStatus::upper)
+        marks[owned_position[i]] = 1.;
+    matrix.vmult(front_reach, front_marks);
+    const double *const       reach = front_reach.begin();
+    std::vector<unsigned int> on_front;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i] && status[i] == BoundStatus::upper
+          && reach[owned_position[i]] != 0.)
+        on_front.push_back(i);
+    return on_front;
+  }
+
+
+
+  std::vector<unsigned int>
+  DamageBounds::front_by_graph(const LA::SparseMatrix &matrix)
+  {
+    // On one rank every neighbour is a node of this rank, and the front is
+    // found from the rows of the upper nodes alone: once the damage has
+    // spread, a fraction of the rows the product would visit. On an
+    // M-matrix the same nodes as
+    // front_by_product(); elsewhere every neighbour counts.
+    if (neighbour_start.size() != dofs.size() + 1)
+      {
+        const Epetra_CrsMatrix &K = matrix.trilinos_matrix();
+        // Rows of constrained (hanging) nodes carry no bounds, and are
+        // nobody's neighbour here, as their marks are zero in the product.
+        constexpr unsigned int    none = numbers::invalid_unsigned_int;
+        std::vector<unsigned int> node_of_row(K.NumMyRows(), none);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          node_of_row[owned_position[i]] = i;
+        neighbour_start.assign(1, 0);
+        neighbour.clear();
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            int     n_entries = 0;
+            double *values    = nullptr;
+            int    *columns   = nullptr;
+            K.ExtractMyRowView(owned_position[i], n_entries, values, columns);
+            for (int e = 0; e < n_entries; ++e)
+              {
+                const unsigned int j
+                  = node_of_row[K.RowMap().LID(K.ColMap().GID(columns[e]))];
+                if (j != none && j != i && values[e] != 0.)
+                  neighbour.push_back(j);
+              }
+            neighbour_start.push_back(neighbour.size());
+          }
+      }
+    std::vector<unsigned int> on_front;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (status[i] == BoundStatus::upper)
+        for (unsigned int e = neighbour_start[i]; e < neighbour_start[i + 1];
+             ++e)
+          if (status[neighbour[e]] != BoundStatus::upper)
+            {
+              on_front.push_back(i);
+              break;
+            }
+    return on_front;
+  }
+
+
+
+  std::vector<unsigned int>
+  DamageBounds::free_next_ring(const std::vector<unsigned int> &ring)
+  {
+    // Every upper node next to a node below 1 was on the front, and is
+    // free now: the next front lies next to the ring just freed.
+    std::vector<unsigned int> next;
+    for (const unsigned int i : ring)
+      for (unsigned int e = neighbour_start[i]; e < neighbour_start[i + 1]; ++e)
+        if (status[neighbour[e]] == BoundStatus::upper)
+          {
+            status[neighbour[e]] = BoundStatus::free;
+            next.push_back(neighbour[e]);
+          }
+    return next;
+  }
+
+
+
+  void
+  DamageBounds::begin_step(const LA::SparseMatrix &matrix)
+  {
+    upper_at_start.resize(dofs.size());
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      upper_at_start[i] = (status[i] == BoundStatus::upper);
+    front_size
+      = Utilities::MPI::sum(static_cast<unsigned int>(front(matrix).size()),
+                            communicator);
+  }
+
+
+
+  double
+  DamageBounds::rings_moved() const
+  {
+    unsigned int n_left = 0;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      n_left
+        += (owned[i] && upper_at_start[i] && status[i] != BoundStatus::upper);
+    n_left = Utilities::MPI::sum(n_left, communicator);
+    return (front_size > 0 ? static_cast<double>(n_left) / front_size : 0.);
+  }
+
+
+
+  unsigned int
+  DamageBounds::free_ahead_of_front(const LA::SparseMatrix &matrix,
+                                    const unsigned int      rings)
+  {
+    // The first ring is the front; on one rank each further ring is found
+    // next to the one before, on several by the product again (a ring may
+    // continue across the cut between ranks).
+    const bool one_rank = (Utilities::MPI::n_mpi_processes(communicator) == 1);
+    unsigned int              n_freed = 0;
+    std::vector<unsigned int> ring;
+    for (unsigned int r = 0; r < rings; ++r)
+      {
+        if (r == 0 || !one_rank)
+          {
+            ring = front(matrix);
+            for (const unsigned int i : ring)
+              status[i] = BoundStatus::free;
+          }
+        else
+          ring = free_next_ring(ring);
+        n_freed += ring.size();
+      }
+    return Utilities::MPI::sum(n_freed, communicator);
+  }
+
+
+
+  const std::vector<BoundStatus> &
+  DamageBounds::sets() const
+  {
+    return status;
+  }
+
+
+
+  void
+  DamageBounds::restore_sets(const std::vector<BoundStatus> &saved)
+  {
+    AssertDimension(saved.size(), status.size());
+    status = saved;
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  DamageBounds::count() const
+  {
+    unsigned int n_lower = 0, n_upper = 0;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i])
+        {
+          n_lower += (status[i] == BoundStatus::lower);
+          n_upper += (status[i] == BoundStatus::upper);
+        }
+    return {Utilities::MPI::sum(n_lower, communicator),
+            Utilities::MPI::sum(n_upper, communicator)};
+  }
+
+
+
+  void
+  DamageBounds::write_state(LA::MPI::Vector &state) const
+  {
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i])
+        state(dofs[i]) = static_cast<double>(static_cast<int>(status[i]));
+    state.compress(VectorOperation::insert);
+  }
+
+
+
+  void
+  DamageBounds::read_state(const LA::MPI::Vector &state)
+  {
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        const double value = state(dofs[i]);
+        AssertThrow(value == -1. || value == 0. || value == 1.,
+                    ExcMessage("The checkpoint holds no valid damage bound "
+                               "state at damage degree of freedom "
+                               + std::to_string(dofs[i]) + "."));
+        status[i] = static_cast<BoundStatus>(static_cast<int>(value));
+      }
+  }
+} // namespace VPContact

@@ -1,0 +1,313 @@
+// The damage obstacle problem of a step: the primal-dual active set of the
+// bounds 0 <= zeta <= 1 around the linear solves of DamageSystem (or SNES VI
+// whole), storing zeta_n, the damage statistics and the checkpointed state.
+#include <vpcontact/damage/damage_problem.h>
+#include <vpcontact/input/input_error.h>
+#include <vpcontact/linear_algebra/finite_values.h>
+#include <vpcontact/linear_algebra/ghost_exchange.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  DamageProblem<dim>::solve(const unsigned int        n,
+                            const LA::MPI::Vector    &solution_owned,
+                            const StressHistory<dim> &history)
+  {
+    // zeta_{n-1} from the solution and the load b of this step. A source
+    // that evaluates to NaN or infinity anywhere spoils the whole load; say
+    // so here rather than let CG fail on it. zeta_n is left in damage_owned
+    // (and damage): store() puts it into the solution after the stress
+    // update, which still reads zeta_{n-1}.
+    last_iterations = 0;
+    change          = 0.;
+    system.gather(solution_owned, old_damage);
+    damage_exchange.copy(old_damage, damage);
+    assemble_load(history);
+    model.check_source_finite(all_finite(load, communicator), n, time.time(n));
+    if (system.solves_obstacle_whole())
+      {
+        TimerOutput::Scope t(timer, "Damage solve");
+        copy_owned_values(old_damage, damage_owned);
+        last_iterations
+          = system.solve_obstacle(load,
+                                  damage_owned,
+                                  linear_solver.tolerance(),
+                                  model.max_iterations(),
+                                  linear_solver.iteration_limit());
+        damage_exchange.copy(damage_owned, damage);
+        return;
+      }
+    solve_by_active_set(n);
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::solve_by_active_set(const unsigned int n)
+  {
+    // The primal-dual active set for 0 <= zeta <= 1: solve with the nodes
+    // of the active sets at their bound, recompute the multipliers from the
+    // residual, take the next sets, until no node changes. The unknown of
+    // the linear solves is the change zeta - zeta_{n-1}: its right-hand
+    // side b - K zeta_{n-1} is small where little happens, so the relative
+    // tolerance of CG measures what changes, not the mass term
+    // M zeta_{n-1}/k. First the fast search (see find_sets_fast()); should
+    // it not settle, the plain method from the sets of the previous step,
+    // every solve to the Solver tolerance.
+    const LA::SparseMatrix &K = system.matrix();
+    LA::MPI::Vector         step_rhs(old_damage);
+    K.vmult(step_rhs, old_damage);
+    step_rhs.sadd(-1., 1., load);
+    bounds.begin_step(K);
+    system.begin_step();
+    const std::vector<BoundStatus> previous_sets = bounds.sets();
+    if (!find_sets_fast(step_rhs))
+      {
+        bounds.restore_sets(previous_sets);
+        change = 0.;
+        for (unsigned int iteration = 1;; ++iteration)
+          {
+            ++last_iterations;
+            const unsigned int n_changed
+              = solve_with_sets(step_rhs, linear_solver.tolerance());
+            if (n_changed == 0)
+              break;
+            AssertThrow(
+              iteration < model.max_iterations(),
+              ExcMessage(
+                "Step " + std::to_string(n)
+                + ": the active set of the damage bounds did not converge: "
+                  "after "
+                + std::to_string(iteration) + " iterations "
+                + std::to_string(n_changed)
+                + " node(s) still change set. Raise Damage/Maximum active set "
+                  "iterations = "
+                + std::to_string(model.max_iterations())
+                + "; on strongly stretched cells (aspect ratio above about "
+                  "1.4) the lumped matrix is not an M-matrix and the "
+                  "iteration need not be monotone, and with a loose "
+                  "Solver/Relative tolerance (1e-10 is the default) the "
+                  "multipliers are too inexact to "
+                  "decide the sets. The output up to step "
+                + std::to_string(n - 1) + " is complete in " + output_directory
+                + "."));
+          }
+      }
+    rings_ahead = static_cast<unsigned int>(std::floor(bounds.rings_moved()));
+  }
+
+
+
+  template <int dim>
+  bool
+  DamageProblem<dim>::find_sets_fast(const LA::MPI::Vector &step_rhs)
+  {
+    // The first sets: one semismooth Newton step from zeta_{n-1} with the
+    // multipliers of this step's load, b - K zeta_{n-1}. It starts from the
+    // sets of the previous step and already moves the nodes that this load
+    // alone pushes off (or onto) a bound; without it the first solve would
+    // only find them.
+    residual_exchange.copy(step_rhs, residual);
+    bounds.update(residual, damage, time.step_size());
+
+    // Then the front of the upper set is moved ahead by as many whole rings
+    // as it moved in the previous step (see
+    // DamageBounds::free_ahead_of_front()), which saves solves on fine
+    // meshes, where the front moves by several rings in a step.
+    bounds.free_ahead_of_front(system.matrix(), rings_ahead);
+
+    // While the sets still change, the solves that find them need not be
+    // exact: their multipliers only decide the next sets. The first few
+    // stop at a relative residual of 1e-6 (or the Solver tolerance, if
+    // looser); once the sets are (nearly) stable, solves to the Solver
+    // tolerance must confirm them, so the sets are always decided by an
+    // exact solve. "Nearly": when a solve changed at most a few nodes, the
+    // next one is exact at once, since its correction is local. Inexact
+    // multipliers can make two nodes trade places for ever, so after six
+    // iterations every solve is exact, and after twenty the caller starts
+    // again from the previous step's sets.
+    constexpr unsigned int few   = 10;
+    const double           tight = linear_solver.tolerance();
+    const double           loose = std::max(tight, 1e-6);
+    bool                   exact = false;
+    for (unsigned int iteration = 1; iteration <= 20; ++iteration)
+      {
+        const double tolerance = (exact || iteration > 6 ? tight : loose);
+        ++last_iterations;
+        const unsigned int n_changed = solve_with_sets(step_rhs, tolerance);
+        if (n_changed == 0 && tolerance == tight)
+          return true;
+        exact = (n_changed <= few);
+      }
+    return false;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageProblem<dim>::solve_with_sets(const LA::MPI::Vector &step_rhs,
+                                      const double           tolerance)
+  {
+    TimerOutput::Scope t(timer, "Damage solve");
+
+    // The held nodes: hanging nodes (change 0 in the solve, set from their
+    // parents after it) and the nodes at a bound (their change is
+    // prescribed).
+    held         = system.hanging_node_positions();
+    bound_change = 0.;
+    bounds.held_changes(old_damage, held, bound_change);
+
+    // The free nodes solve K_FF change_F = (b - K (zeta_{n-1} +
+    // bound_change))_F; the held rows of the right-hand side are zero. The
+    // change of the previous solve is the start vector.
+    system.vmult_on_support(solve_rhs, bound_change);
+    solve_rhs.sadd(-1., 1., step_rhs);
+    for (const auto i : held)
+      {
+        solve_rhs.begin()[i] = 0.;
+        change.begin()[i]    = 0.;
+      }
+    system.solve(solve_rhs,
+                 change,
+                 held,
+                 tolerance,
+                 linear_solver.iteration_limit());
+    change += bound_change;
+    system.distribute_hanging_nodes(change);
+    copy_owned_values(old_damage, damage_owned);
+    damage_owned += change;
+    damage_exchange.copy(damage_owned, damage);
+
+    // The multipliers r = b - K zeta = (b - K zeta_{n-1}) - K change
+    // (bounds not condensed; hanging nodes carry none) and the next sets.
+    system.vmult_on_support(residual_owned, change);
+    residual_owned.sadd(-1., 1., step_rhs);
+    residual_exchange.copy(residual_owned, residual);
+    return bounds.update(residual, damage, time.step_size());
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::store(const unsigned int n,
+                            LA::MPI::Vector   &solution_owned)
+  {
+    // Nodes between the bounds satisfy them up to the solver tolerance;
+    // clip them onto [0, 1] (the exact discrete solution lies there) and
+    // record by how much, then store zeta_n in the solution.
+    double clip = 0;
+    for (double &value : damage_owned)
+      {
+        const double clipped = std::clamp(value, 0., 1.);
+        // NaN compares false: the clip becomes infinite and is caught
+        // below, on every rank alike.
+        clip  = (std::abs(value - clipped) <= clip ? clip :
+                 std::isfinite(value)              ? std::abs(value - clipped) :
+                                        std::numeric_limits<double>::infinity());
+        value = clipped;
+      }
+    clip = Utilities::MPI::max(clip, communicator);
+    AssertThrow(std::isfinite(clip),
+                ExcMessage("Step " + std::to_string(n)
+                           + ": the damage is not finite. The output up to the "
+                             "previous step is complete in "
+                           + output_directory + "."));
+    // Hanging nodes take the average of their (clipped) parents again.
+    system.distribute_hanging_nodes(damage_owned);
+    last_clip = clip;
+    damage_exchange.copy(damage_owned, damage);
+    system.scatter(damage_owned, solution_owned);
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::add_statistics(Statistics  &statistics,
+                                     std::string &line,
+                                     const double fraction)
+  {
+    // Nodal extremes, the bound violation (which must be exactly 0), and the
+    // volume fraction where zeta < 1 at the quadrature points. On a uniform
+    // mesh the fraction is a multiple of the weight of a point and often
+    // lands on a tie of the rounding to 0.01 %, which the order of the sums
+    // would decide: it is first rounded to 1e-9.
+    const auto [lowest, highest] = range(damage_owned);
+    const double violation       = std::max({0., -lowest, highest - 1.});
+    largest_violation            = std::max(largest_violation, violation);
+
+    statistics.add_value("damage_min", lowest);
+    statistics.add_value("damage_max", highest);
+    statistics.add_value("damaged_fraction", fraction);
+    statistics.add_value("damage_bound_violation", violation);
+    statistics.add_value("damage_clip", last_clip);
+    statistics.add_value("damage_iterations", last_iterations);
+    line += "  zeta in [" + to_text(std::round(lowest * 1e6) / 1e6) + ", "
+            + to_text(std::round(highest * 1e6) / 1e6) + "]  damaged "
+            + to_text(std::round(std::round(fraction * 1e9) / 1e5) / 1e2) + "%";
+  }
+
+
+
+  template <int dim>
+  double
+  DamageProblem<dim>::max_violation() const
+  {
+    return largest_violation;
+  }
+
+
+
+  template <int dim>
+  const IndexSet &
+  DamageProblem<dim>::full_dofs() const
+  {
+    return system.full_dofs();
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::write_checkpoint(
+    LA::MPI::Vector               &sets_owned,
+    std::map<std::string, double> &counters) const
+  {
+    LA::MPI::Vector bound_sets(system.owned(), communicator);
+    bounds.write_state(bound_sets);
+    system.scatter(bound_sets, sets_owned);
+    counters["max_damage_violation"] = largest_violation;
+    counters["damage_rings_ahead"]   = rings_ahead;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::read_checkpoint(
+    const LA::MPI::Vector                            &sets_owned,
+    const std::function<double(const std::string &)> &counter)
+  {
+    LA::MPI::Vector bound_sets(system.owned(), communicator);
+    system.gather(sets_owned, bound_sets);
+    LA::MPI::Vector ghosted(system.owned(), system.relevant(), communicator);
+    ghosted = bound_sets;
+    bounds.read_state(ghosted);
+    largest_violation = counter("max_damage_violation");
+    rings_ahead = static_cast<unsigned int>(counter("damage_rings_ahead"));
+  }
+
+
+
+  template class DamageProblem<2>;
+  template class DamageProblem<3>;
+} // namespace VPContact

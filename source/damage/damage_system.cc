@@ -1,0 +1,530 @@
+// The damage problem's linear algebra on the damage degrees of freedom alone.
+#include <vpcontact/damage/damage_system.h>
+#include <vpcontact/fe/owned_constraints.h>
+#include <vpcontact/input/input_error.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace VPContact
+{
+  namespace
+  {
+    // The IndexSet of size @p size holding @p indices (in any order, with
+    // repetitions), built in O(n log n): IndexSet::add_index() inserts an
+    // index below the last one added in time linear in the set's ranges.
+    IndexSet
+    sorted_index_set(const types::global_dof_index         size,
+                     std::vector<types::global_dof_index> &indices)
+    {
+      std::sort(indices.begin(), indices.end());
+      indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+      IndexSet set(size);
+      set.add_indices(indices.begin(), indices.end());
+      set.compress();
+      return set;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry(
+        "Damage preconditioner",
+        "modified diagonal incomplete Cholesky",
+        Patterns::Selection("modified diagonal incomplete Cholesky|modified "
+                            "incomplete Cholesky|incomplete Cholesky|AMG"),
+        "Preconditioner of the CG solves of the damage problem, M_L/k + "
+        "kappa A on the nodes off the bounds. The first two are the "
+        "program's own (DamageRegionSolver), for either Solver/Linear "
+        "algebra: CG runs over the free nodes only, preconditioned on a "
+        "region of each rank's rows around them that is kept for the whole "
+        "step, so that a solve costs in proportion to the damaged part of "
+        "the body. 'modified diagonal incomplete Cholesky': P = (D + L) "
+        "D^{-1} (D + L^T) with L the strictly lower part of the matrix and "
+        "D such that P keeps its row sums, applied with Eisenstat's trick "
+        "(an iteration is two triangular sweeps, no separate product). "
+        "'modified incomplete Cholesky': MIC(0), which keeps the row sums "
+        "too. Both need fewer iterations than IC(0) (O(h^-1/2) against "
+        "O(h^-1)). 'incomplete Cholesky': IC(0) of the free rows' "
+        "submatrix from the package of Solver/Linear algebra (Ifpack, or "
+        "PETSc block Jacobi with ICC), rebuilt when the free set changes. "
+        "'AMG': algebraic multigrid (ML, GAMG) of the whole matrix, whose "
+        "iterations do not grow with the mesh, for meshes far finer than "
+        "512^2 cells or where kappa k / h^2 is large. doc/performance.md "
+        "says what each costs.");
+      prm.declare_entry(
+        "Damage obstacle solver",
+        "active set",
+        Patterns::Selection("active set|SNES VI"),
+        "How the bounds 0 <= zeta <= 1 of the damage problem are found. "
+        "'active set': the program's primal-dual active set around the CG "
+        "solves above, warm-started from the previous step's sets, with "
+        "inexact solves while the sets still change (Damage/Maximum active "
+        "set iterations bounds it). 'SNES VI': PETSc's reduced-space "
+        "semismooth Newton method for variational inequalities "
+        "(SNESVINEWTONRSLS) on the whole problem, started from zeta_{n-1}, "
+        "with CG and block Jacobi / ICC on the free nodes; it needs "
+        "Linear algebra = PETSc and a mesh without hanging nodes. Both "
+        "solve the same discrete problem.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::parse_parameters(ParameterHandler   &prm,
+                                      const LinearAlgebra linear_algebra)
+  {
+    prm.enter_subsection("Solver");
+    const std::string kind = prm.get("Damage preconditioner");
+    method
+      = (kind == "AMG" ? SpdMethod::cg_amg : SpdMethod::cg_incomplete_cholesky);
+    use_region_solver = (kind != "AMG" && kind != "incomplete Cholesky");
+    region_kind
+      = (kind == "modified incomplete Cholesky" ?
+           DamageRegionSolver::Preconditioner::modified_incomplete_cholesky :
+           DamageRegionSolver::Preconditioner::diagonal);
+    package     = linear_algebra;
+    use_snes_vi = (prm.get("Damage obstacle solver") == "SNES VI");
+    AssertThrow(!use_snes_vi || package == LinearAlgebra::petsc,
+                ExcMessage(parameter_message(
+                  "Solver/Damage obstacle solver",
+                  "SNES VI",
+                  "PETSc's SNES VI needs Solver/Linear algebra = PETSc "
+                  "(it is Trilinos here): set both, or choose 'active set'.")));
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::reinit(const DoFHandler<dim> &dof_handler,
+                            const unsigned int     component,
+                            const IndexSet        &locally_owned_dofs,
+                            const IndexSet        &locally_relevant_dofs,
+                            const MPI_Comm         communicator)
+  {
+    solver.reset(); // it refers to the matrix of the last mesh
+    const auto &fe = dof_handler.get_fe();
+    damage_shape_functions.clear();
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first == component)
+        damage_shape_functions.push_back(i);
+
+    const LA::MPI::Vector index = number_dofs(dof_handler,
+                                              locally_owned_dofs,
+                                              locally_relevant_dofs,
+                                              communicator);
+    make_hanging_node_constraints(dof_handler, locally_relevant_dofs, index);
+    has_hanging_nodes = (Utilities::MPI::max(static_cast<unsigned int>(
+                                               constraints.n_constraints()),
+                                             communicator)
+                         > 0);
+
+    DynamicSparsityPattern               dsp(compact_relevant);
+    std::vector<types::global_dof_index> indices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          dof_indices(cell, indices);
+          constraints.add_entries_local_to_global(indices, dsp, false);
+        }
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               compact_owned,
+                                               communicator,
+                                               compact_relevant);
+    system_matrix.reinit(compact_owned, compact_owned, dsp, communicator);
+  }
+
+
+
+  template <int dim>
+  LA::MPI::Vector
+  DamageSystem<dim>::number_dofs(const DoFHandler<dim> &dof_handler,
+                                 const IndexSet        &locally_owned_dofs,
+                                 const IndexSet        &locally_relevant_dofs,
+                                 const MPI_Comm         communicator)
+  {
+    // The damage dofs this rank sees, and the owned ones in the order of
+    // the FESystem: they get the compact indices first, first + 1, ...
+    // The cells of a mesh file come in any order, and an IndexSet takes
+    // indices one at a time in linear time each unless they come sorted:
+    // they are collected, sorted and added at once.
+    std::vector<types::global_dof_index> dofs(
+      dof_handler.get_fe().n_dofs_per_cell());
+    std::vector<types::global_dof_index> seen;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (const unsigned int i : damage_shape_functions)
+            seen.push_back(dofs[i]);
+        }
+    damage_dofs = sorted_index_set(dof_handler.n_dofs(), seen);
+    const IndexSet owned_damage_dofs = damage_dofs & locally_owned_dofs;
+    compact_owned = Utilities::MPI::create_ascending_partitioning(
+      communicator,
+      owned_damage_dofs
+        .n_elements())[Utilities::MPI::this_mpi_process(communicator)];
+
+    // The compact index of every relevant damage dof, through a ghosted
+    // FESystem vector that holds it (exact in a double up to 2^53).
+    LA::MPI::Vector index_owned(locally_owned_dofs, communicator);
+    full_position.clear();
+    // A rank may own no cell (and no damage node) at all.
+    types::global_dof_index next
+      = (compact_owned.n_elements() > 0 ? compact_owned.nth_index_in_set(0) :
+                                          0);
+    for (const auto dof : owned_damage_dofs)
+      {
+        index_owned(dof) = static_cast<double>(next++);
+        full_position.push_back(locally_owned_dofs.index_within_set(dof));
+      }
+    index_owned.compress(VectorOperation::insert);
+    LA::MPI::Vector index(locally_owned_dofs,
+                          locally_relevant_dofs,
+                          communicator);
+    index = index_owned;
+
+    seen.clear();
+    for (const auto dof : damage_dofs)
+      seen.push_back(to_compact(index, dof));
+    compact_relevant = sorted_index_set(compact_owned.size(), seen);
+
+    const unsigned int n_shape = damage_shape_functions.size();
+    cell_dofs.assign(dof_handler.get_triangulation().n_active_cells() * n_shape,
+                     numbers::invalid_dof_index);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int j = 0; j < n_shape; ++j)
+            cell_dofs[cell->active_cell_index() * n_shape + j]
+              = to_compact(index, dofs[damage_shape_functions[j]]);
+        }
+    return index;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  DamageSystem<dim>::to_compact(const LA::MPI::Vector        &index,
+                                const types::global_dof_index dof)
+  {
+    return static_cast<types::global_dof_index>(std::llround(index(dof)));
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::make_hanging_node_constraints(
+    const DoFHandler<dim> &dof_handler,
+    const IndexSet        &locally_relevant_dofs,
+    const LA::MPI::Vector &index)
+  {
+    // The hanging node constraints of the FESystem, translated. A hanging
+    // damage node depends on damage nodes of a cell this rank sees, so its
+    // parents are relevant here too.
+    AffineConstraints<double> full_constraints(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, full_constraints);
+    full_constraints.close();
+    constraints.clear();
+    constraints.reinit(compact_relevant);
+    for (const auto dof : damage_dofs)
+      if (full_constraints.is_constrained(dof))
+        {
+          const auto line = to_compact(index, dof);
+          constraints.add_line(line);
+          for (const auto &[parent, weight] :
+               *full_constraints.get_constraint_entries(dof))
+            {
+              AssertThrow(locally_relevant_dofs.is_element(parent),
+                          ExcInternalError());
+              constraints.add_entry(line, to_compact(index, parent), weight);
+            }
+        }
+    constraints.close();
+    hanging_positions.clear();
+    for (const auto dof : compact_owned)
+      if (constraints.is_constrained(dof))
+        hanging_positions.push_back(local_position(dof));
+  }
+
+
+
+  template <int dim>
+  const IndexSet &
+  DamageSystem<dim>::owned() const
+  {
+    return compact_owned;
+  }
+
+
+
+  template <int dim>
+  const IndexSet &
+  DamageSystem<dim>::relevant() const
+  {
+    return compact_relevant;
+  }
+
+
+
+  template <int dim>
+  const IndexSet &
+  DamageSystem<dim>::full_dofs() const
+  {
+    return damage_dofs;
+  }
+
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  DamageSystem<dim>::shape_functions() const
+  {
+    return damage_shape_functions;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::dof_indices(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    std::vector<types::global_dof_index>                 &indices) const
+  {
+    const unsigned int n_shape = damage_shape_functions.size();
+    indices.resize(n_shape);
+    for (unsigned int j = 0; j < n_shape; ++j)
+      indices[j] = cell_dofs[cell->active_cell_index() * n_shape + j];
+  }
+
+
+
+  template <int dim>
+  const AffineConstraints<double> &
+  DamageSystem<dim>::hanging_node_constraints() const
+  {
+    return constraints;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::distribute_hanging_nodes(
+    LA::MPI::Vector &owned_vector) const
+  {
+    if (has_hanging_nodes)
+      distribute_constraints(constraints, owned_vector);
+  }
+
+
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  DamageSystem<dim>::hanging_node_positions() const
+  {
+    return hanging_positions;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageSystem<dim>::local_position(
+    const types::global_dof_index compact_index) const
+  {
+    return compact_index - compact_owned.nth_index_in_set(0);
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::gather(const LA::MPI::Vector &full,
+                            LA::MPI::Vector       &compact) const
+  {
+    // The local entries of owned vectors, in the order of their index sets
+    // (contiguous ranges here): no index lookup per entry.
+    const double *source      = full.begin();
+    double       *destination = compact.begin();
+    for (unsigned int i = 0; i < full_position.size(); ++i)
+      destination[i] = source[full_position[i]];
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::scatter(const LA::MPI::Vector &compact,
+                             LA::MPI::Vector       &full) const
+  {
+    const double *source      = compact.begin();
+    double       *destination = full.begin();
+    for (unsigned int i = 0; i < full_position.size(); ++i)
+      destination[full_position[i]] = source[i];
+  }
+
+
+
+  template <int dim>
+  LA::SparseMatrix &
+  DamageSystem<dim>::matrix()
+  {
+    return system_matrix;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::initialize_preconditioner()
+  {
+    // SNES VI does the linear solves itself: the preconditioner of the
+    // active set's solves is built only for them.
+    support_product.initialize(system_matrix,
+                               compact_owned,
+                               system_matrix.get_mpi_communicator());
+    if (!use_snes_vi && use_region_solver)
+      region_solver.initialize(system_matrix,
+                               compact_owned,
+                               system_matrix.get_mpi_communicator(),
+                               region_kind);
+    else if (!use_snes_vi)
+      {
+        solver
+          = create_spd_solver(package, method, "Solver/Damage preconditioner");
+        solver->initialize(system_matrix, NearNullSpace());
+      }
+    else
+      {
+        // SNES VI sees the bounds of every node; a hanging node must
+        // instead follow its parents, which the active set method holds.
+        AssertThrow(!has_hanging_nodes,
+                    ExcMessage(parameter_message(
+                      "Solver/Damage obstacle solver",
+                      "SNES VI",
+                      "the mesh has hanging nodes (adaptive refinement), "
+                      "which SNES VI cannot hold to their parents: choose "
+                      "'active set' for this scene.")));
+        if (!obstacle_snes)
+          obstacle_snes = std::make_unique<DamageObstacleSnes>();
+        obstacle_snes->initialize(system_matrix);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::vmult_on_support(LA::MPI::Vector       &y,
+                                      const LA::MPI::Vector &x)
+  {
+    support_product.vmult(y, x);
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::begin_step()
+  {
+    region_solver.begin_step();
+  }
+
+
+
+  template <int dim>
+  bool
+  DamageSystem<dim>::solves_obstacle_whole() const
+  {
+    return use_snes_vi;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageSystem<dim>::solve_obstacle(const LA::MPI::Vector &b,
+                                    LA::MPI::Vector       &zeta,
+                                    const double           tolerance,
+                                    const unsigned int     max_iterations,
+                                    const unsigned int max_linear_iterations)
+  {
+    Assert(obstacle_snes, ExcMessage("initialize_preconditioner() first."));
+    return obstacle_snes->solve(b,
+                                zeta,
+                                tolerance,
+                                max_iterations,
+                                max_linear_iterations);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageSystem<dim>::solve(const LA::MPI::Vector           &b,
+                           LA::MPI::Vector                 &x,
+                           const std::vector<unsigned int> &held,
+                           const double                     tolerance,
+                           const unsigned int               max_iterations)
+  {
+    // The region solver measures |b| on the free nodes itself (b vanishes
+    // on the held ones) and returns x = 0 for b = 0.
+    const double b_norm = (use_region_solver ? 0. : b.l2_norm());
+    if (!use_region_solver && b_norm == 0.)
+      {
+        x = 0.;
+        return 0;
+      }
+    SolverControl control(max_iterations, tolerance * b_norm);
+    try
+      {
+        if (use_region_solver)
+          return region_solver.solve(b, x, held, tolerance, max_iterations);
+        Assert(solver, ExcMessage("initialize_preconditioner() first."));
+        return solver->solve(x, b, control, held);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        // Every rank gets here in the same iteration (the residual is
+        // global).
+        AssertThrow(false,
+                    ExcMessage("CG did not converge for the damage: after "
+                               + std::to_string(e.last_step)
+                               + " iterations the residual is "
+                               + to_text(e.last_residual) + " > "
+                               + to_text(control.tolerance())
+                               + ". Raise Solver/Maximum linear iterations or "
+                                 "loosen Solver/Relative tolerance."));
+      }
+    return 0;
+  }
+
+
+
+  template class DamageSystem<2>;
+  template class DamageSystem<3>;
+} // namespace VPContact

@@ -1,0 +1,318 @@
+// The section "Solver" and the solution of the displacement system.
+#include <vpcontact/input/input_error.h>
+#include <vpcontact/linear_algebra/finite_values.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/linear_solver.h>
+
+#include <deal.II/lac/solver_cg.h>
+
+#include <algorithm>
+#include <future>
+
+namespace VPContact
+{
+  void
+  LinearSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry(
+        "Linear algebra",
+        "Trilinos",
+        Patterns::Selection("Trilinos|PETSc"),
+        "The package of the solvers and preconditioners of the displacement "
+        "and damage systems. 'Trilinos': ML algebraic multigrid, Ifpack "
+        "incomplete Cholesky, Amesos KLU and MUMPS. 'PETSc': GAMG, block "
+        "Jacobi with ICC, and MUMPS; 'Cholesky' is the same with both. "
+        "options prefixed 'vpcontact_' in PETSC_OPTIONS reach its "
+        "preconditioners. Both give the same results to the solver "
+        "tolerance; see doc/performance.md for what each costs.");
+      prm.declare_entry(
+        "Linear solver",
+        "CG with AMG",
+        Patterns::Selection("CG with AMG|direct|MUMPS|Cholesky"),
+        "'CG with AMG': conjugate gradients preconditioned by algebraic "
+        "multigrid whose near null space holds the rigid motions; scales to "
+        "large meshes and many ranks, and is the method for 3D. 'direct': "
+        "a factorization that gathers the matrix (Amesos KLU with Trilinos, "
+        "MUMPS with PETSc), for small meshes. 'MUMPS': the distributed "
+        "multifrontal factorization, for medium meshes under mpirun. "
+        "'Cholesky': the supernodal factorization of SuiteSparse CHOLMOD on "
+        "one process (CHOLMOD's own substitutions, run beside the damage "
+        "step in a second thread), the fastest choice for a serial 2D run. A "
+        "factorization is computed once per matrix and reused by every "
+        "step, and again whenever the stick set changes.");
+      prm.declare_entry("Relative tolerance",
+                        "1e-10",
+                        Patterns::Double(0, 1),
+                        "CG stops when the residual norm is below this "
+                        "fraction of the right-hand side norm.");
+      prm.declare_entry("Maximum linear iterations",
+                        "1000",
+                        Patterns::Integer(1),
+                        "CG gives up (and the run stops with a message) after "
+                        "this many iterations.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LinearSolver::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    linear_algebra
+      = (prm.get("Linear algebra") == "PETSc" ? LinearAlgebra::petsc :
+                                                LinearAlgebra::trilinos);
+    const std::string name = prm.get("Linear solver");
+    method                 = (name == "CG with AMG" ? SpdMethod::cg_amg :
+                              name == "Cholesky"    ? SpdMethod::cholesky :
+                              name == "MUMPS"       ? SpdMethod::mumps :
+                                                      SpdMethod::direct);
+    relative_tolerance     = prm.get_double("Relative tolerance");
+    max_iterations         = prm.get_integer("Maximum linear iterations");
+    prm.leave_subsection();
+    // At 1 the start vector already meets the tolerance, and no step would
+    // be solved at all.
+    VPContactCheckParameter(relative_tolerance > 0 && relative_tolerance < 1,
+                            "Solver/Relative tolerance",
+                            relative_tolerance,
+                            "must lie in (0, 1), e.g. 1e-10.");
+    VPContactCheckParameter(method != SpdMethod::cholesky
+                              || Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+                                   == 1,
+                            "Solver/Linear solver",
+                            name,
+                            "factorizes on one process only: run without "
+                            "mpirun, or choose MUMPS "
+                            "(distributed) or CG with AMG.");
+  }
+
+
+
+  void
+  LinearSolver::clear()
+  {
+    solver.reset();
+    matrix                   = nullptr;
+    changed_since_initialize = false;
+  }
+
+
+
+  void
+  LinearSolver::initialize(const LA::SparseMatrix &matrix,
+                           const NearNullSpace    &near_null_space)
+  {
+    clear();
+    solver = create_spd_solver(linear_algebra, method, "Solver/Linear solver");
+    solver->initialize(matrix, near_null_space);
+    // AMG's rigid motions, for a rebuild after the matrix changed in place.
+    if (method == SpdMethod::cg_amg && &near_null_space != &kept_null_space)
+      kept_null_space = near_null_space;
+    this->matrix             = &matrix;
+    changed_since_initialize = false;
+    iterations_before = iterations_after = 0;
+  }
+
+
+
+  void
+  LinearSolver::matrix_changed()
+  {
+    changed_since_initialize = true;
+  }
+
+
+
+  bool
+  LinearSolver::preconditioner_outdated() const
+  {
+    // A factorization solves in one step, AMG in its own count; a few more
+    // CG iterations are cheaper than a new factorization or hierarchy.
+    return changed_since_initialize
+           && iterations_after > std::max(2 * iterations_before, 10u);
+  }
+
+
+
+  bool
+  LinearSolver::solve_changed_matrix(LA::MPI::Vector       &x,
+                                     const LA::MPI::Vector &b,
+                                     const double           tolerance,
+                                     unsigned int          &iterations)
+  {
+    // The preconditioner or the factors of the matrix as it was, applied by
+    // the SpdSolver of either package to Trilinos vectors.
+    struct Preconditioner
+    {
+      SpdSolver *solver;
+      void
+      vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const
+      {
+        solver->precondition(dst, src);
+      }
+    };
+    // Beyond a few times the iterations of a fresh solve, a new
+    // preconditioner is cheaper; where the change is large (a slip node's
+    // stiffness far above the elastic one) the old one may not converge
+    // at all.
+    SolverControl         control(std::min(max_iterations,
+                                   std::max(4 * iterations_before, 50u)),
+                          tolerance);
+    const LA::MPI::Vector start(x);
+    try
+      {
+        SolverCG<LA::MPI::Vector> cg(control);
+        cg.solve(*matrix, x, b, Preconditioner{solver.get()});
+        iterations = iterations_after = control.last_step();
+        return true;
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        x          = start;
+        iterations = control.last_step();
+        return false;
+      }
+  }
+
+
+
+  double
+  LinearSolver::checked_norm(const LA::MPI::Vector &b)
+  {
+    AssertThrow(all_finite(b, b.get_mpi_communicator()),
+                ExcMessage("The right-hand side of the displacement system "
+                           "is not finite (NaN or Inf). Check the load "
+                           "expressions in 'Boundary conditions'."));
+    return b.l2_norm();
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve(LA::MPI::Vector &x, const LA::MPI::Vector &b)
+  {
+    const double b_norm = checked_norm(b);
+    if (b_norm == 0.)
+      {
+        x = 0.;
+        return 0;
+      }
+    SolverControl control(max_iterations, relative_tolerance * b_norm);
+    try
+      {
+        unsigned int stale_iterations = 0;
+        if (changed_since_initialize)
+          {
+            if (solve_changed_matrix(x,
+                                     b,
+                                     control.tolerance(),
+                                     stale_iterations))
+              return stale_iterations;
+            initialize(*matrix, kept_null_space);
+          }
+        iterations_before = solver->solve(x, b, control);
+        return stale_iterations + iterations_before;
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        AssertThrow(
+          false,
+          ExcMessage("CG did not converge: after " + std::to_string(e.last_step)
+                     + " iterations the residual is " + to_text(e.last_residual)
+                     + " > " + to_text(control.tolerance())
+                     + " (Solver/Relative tolerance = "
+                     + to_text(relative_tolerance)
+                     + " times |b|). Raise Solver/Maximum linear iterations = "
+                     + std::to_string(max_iterations)
+                     + ", loosen the tolerance, or use Solver/Linear solver = "
+                       "direct on small meshes."));
+      }
+    return 0;
+  }
+
+
+
+  bool
+  LinearSolver::solves_in_background() const
+  {
+    return method == SpdMethod::cholesky && solver != nullptr
+           && !changed_since_initialize;
+  }
+
+
+
+  std::future<unsigned int>
+  LinearSolver::solve_in_background(LA::MPI::Vector             &x,
+                                    const LA::MPI::Vector       &b,
+                                    const std::function<void()> &then)
+  {
+    Assert(solves_in_background(), ExcInternalError());
+    // What solve() does with a factorization, in the same order: the checks
+    // and the norm (reductions over the ranks) here, in the calling thread;
+    // the substitutions in the second thread, which touches nothing but the
+    // factors, x and b, and the count of the last solve, read again only
+    // after get(). Should the caller leave by an exception before get(),
+    // the future's destructor waits for the thread.
+    const double b_norm = checked_norm(b);
+    if (b_norm == 0.)
+      {
+        x = 0.;
+        return std::async(std::launch::async, [then]() {
+          if (then)
+            then();
+          return 0u;
+        });
+      }
+    const double tolerance = relative_tolerance * b_norm;
+    return std::async(std::launch::async, [this, &x, &b, tolerance, then]() {
+      SolverControl control(max_iterations, tolerance);
+      iterations_before = solver->solve(x, b, control);
+      if (then)
+        then();
+      return iterations_before;
+    });
+  }
+
+
+
+  void
+  LinearSolver::precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src)
+  {
+    solver->precondition(dst, src);
+  }
+
+
+
+  LinearAlgebra
+  LinearSolver::package() const
+  {
+    return linear_algebra;
+  }
+
+
+
+  bool
+  LinearSolver::is_direct() const
+  {
+    return method != SpdMethod::cg_amg;
+  }
+
+
+
+  double
+  LinearSolver::tolerance() const
+  {
+    return relative_tolerance;
+  }
+
+
+
+  unsigned int
+  LinearSolver::iteration_limit() const
+  {
+    return max_iterations;
+  }
+} // namespace VPContact

@@ -1,0 +1,178 @@
+// PETSc's errors in the program's words, and the copies between the
+// program's Trilinos objects and PETSc's.
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/petsc_tools.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace VPContact
+{
+  namespace
+  {
+    // The origin of the last PETSc error, in PETSc's words.
+    std::string last_petsc_error;
+
+    // Called by PETSc for the routine where an error starts and for every
+    // caller it returns through; only the first says what went wrong.
+    PetscErrorCode
+    record_petsc_error(MPI_Comm,
+                       int,
+                       const char *function,
+                       const char *,
+                       PetscErrorCode code,
+                       PetscErrorType type,
+                       const char    *message,
+                       void *)
+    {
+      if (type == PETSC_ERROR_INITIAL)
+        {
+          const char *text = nullptr;
+          PetscErrorMessage(code, &text, nullptr);
+          last_petsc_error = std::string(text != nullptr ? text : "")
+                             + (message != nullptr && *message != '\0' ?
+                                  std::string(" (") + message + ")" :
+                                  std::string())
+                             + " in " + function + "()";
+        }
+      return code;
+    }
+
+    std::string
+    petsc_options_text()
+    {
+      const char *options = std::getenv("PETSC_OPTIONS");
+      return options != nullptr ? options : "";
+    }
+  } // namespace
+
+
+
+  std::string
+  petsc_options_problem()
+  {
+    // PetscInitialize() reads the files named after -options_file (and
+    // -options_file_yaml) and aborts on one it cannot open.
+    std::istringstream words(petsc_options_text());
+    std::string        word, file;
+    while (words >> word)
+      if ((word == "-options_file" || word == "-options_file_yaml"))
+        {
+          if (!(words >> file) || !std::ifstream(file))
+            return "the environment variable PETSC_OPTIONS = '"
+                   + petsc_options_text() + "' names the options file '" + file
+                   + "' after " + word
+                   + ", which cannot be read. Correct the path or unset "
+                     "PETSC_OPTIONS.";
+        }
+    return "";
+  }
+
+
+
+  void
+  install_petsc_error_messages()
+  {
+    PetscPushErrorHandler(record_petsc_error, nullptr);
+  }
+
+
+
+  std::string
+  petsc_failure_message(const std::string &call, const PetscErrorCode code)
+  {
+    std::string message
+      = "PETSc: " + call + " failed with error code " + std::to_string(code)
+        + (last_petsc_error.empty() ? std::string() : ": " + last_petsc_error)
+        + ".";
+    const std::string options = petsc_options_text();
+    if (!options.empty())
+      message += " The environment variable PETSC_OPTIONS = '" + options
+                 + "' sets PETSc options, and those prefixed vpcontact_ "
+                   "reach this program's solvers: correct the option PETSc "
+                   "names (its manual pages list the values each takes), or "
+                   "unset PETSC_OPTIONS.";
+    return message;
+  }
+
+
+
+  Mat
+  copy_to_petsc(const LA::SparseMatrix &matrix,
+                const unsigned int      dofs_per_node)
+  {
+    // PETSc's CSR preallocation wants each row's columns in ascending
+    // global order; Epetra keeps them by local column index.
+    const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    const int               n      = epetra.NumMyRows();
+    std::vector<PetscInt>   row_start(n + 1, 0);
+    std::vector<std::pair<PetscInt, PetscScalar>> row;
+    std::vector<PetscInt>                         columns;
+    std::vector<PetscScalar>                      values;
+    columns.reserve(epetra.NumMyNonzeros());
+    values.reserve(epetra.NumMyNonzeros());
+    for (int r = 0; r < n; ++r)
+      {
+        int     length;
+        double *entries;
+        int    *local_columns;
+        epetra.ExtractMyRowView(r, length, entries, local_columns);
+        row.clear();
+        for (int j = 0; j < length; ++j)
+          row.emplace_back(epetra.ColMap().GID64(local_columns[j]), entries[j]);
+        std::sort(row.begin(), row.end(), [](const auto &p, const auto &q) {
+          return p.first < q.first;
+        });
+        for (const auto &[column, value] : row)
+          {
+            columns.push_back(column);
+            values.push_back(value);
+          }
+        row_start[r + 1] = columns.size();
+      }
+    Mat A;
+    VPContactPetsc(MatCreate(matrix.get_mpi_communicator(), &A));
+    VPContactPetsc(MatSetSizes(A, n, n, matrix.m(), matrix.n()));
+    VPContactPetsc(MatSetBlockSize(A, dofs_per_node));
+    VPContactPetsc(MatSetType(A, MATAIJ));
+    VPContactPetsc(MatSeqAIJSetPreallocationCSR(A,
+                                                row_start.data(),
+                                                columns.data(),
+                                                values.data()));
+    VPContactPetsc(MatMPIAIJSetPreallocationCSR(A,
+                                                row_start.data(),
+                                                columns.data(),
+                                                values.data()));
+    VPContactPetsc(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    VPContactPetsc(MatSetOption(A, MAT_SPD, PETSC_TRUE));
+    return A;
+  }
+
+
+
+  void
+  copy_to_petsc(const LA::MPI::Vector &from, Vec to)
+  {
+    PetscScalar *entries;
+    VPContactPetsc(VecGetArray(to, &entries));
+    std::copy(from.begin(), from.end(), entries);
+    VPContactPetsc(VecRestoreArray(to, &entries));
+  }
+
+
+
+  void
+  copy_from_petsc(Vec from, LA::MPI::Vector &to)
+  {
+    const PetscScalar *entries;
+    VPContactPetsc(VecGetArrayRead(from, &entries));
+    std::copy(entries, entries + to.locally_owned_size(), to.begin());
+    VPContactPetsc(VecRestoreArrayRead(from, &entries));
+  }
+} // namespace VPContact

@@ -1,0 +1,492 @@
+// ErrorEstimator: the section "Error estimate", and in every step the
+// recovery of stress, strain and damage gradient on continuous Q1 fields and
+// the space and time parts of the estimate (the work once per mesh is in
+// error_estimator_setup.cc).
+#include <vpcontact/input/input_error.h>
+#include <vpcontact/refinement/error_estimator.h>
+
+#include <deal.II/base/parallel.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace VPContact
+{
+  namespace
+  {
+    template <int dim>
+    constexpr unsigned int n_tensor
+      = SymmetricTensor<2, dim>::n_independent_components;
+    /// The number of recovered components: the stress and the strain, and
+    /// with damage its gradient.
+    template <int dim, bool damage>
+    constexpr unsigned int n_fields = 2 * n_tensor<dim> + (damage ? dim : 0);
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Error estimate");
+    prm.declare_entry(
+      "Estimate error",
+      "true",
+      Patterns::Bool(),
+      "Estimate the error of the run in the norm of the paper's Theorem 2 "
+      "after every step: a space part (recovery of stress, strain and "
+      "damage gradient) and a time part (the error of the forward Euler "
+      "quadrature of the viscoplastic rate). It is printed at the end of "
+      "the run, written to statistics.csv and convergence.csv, and drives "
+      "adaptive cycles (doc/convergence.md).");
+    prm.declare_entry(
+      "Every steps",
+      "1",
+      Patterns::Integer(1),
+      "Estimate at step 0, at every step whose number is a multiple of "
+      "this, and at the last step of the run; the other steps leave the "
+      "estimate columns of statistics.csv empty. The largest estimate over "
+      "the steps and the cells' indicators are then taken over the "
+      "estimated steps. The estimate grows with time in the scenes of "
+      "doc/convergence.md, so its largest value is that of the last step, "
+      "which every setting estimates; 10 (the steps written by Output/"
+      "Output every, by default) makes the estimate about a tenth of its "
+      "cost.");
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::parse_parameters(ParameterHandler &prm,
+                                        const bool        for_adaptive_cycles)
+  {
+    prm.enter_subsection("Error estimate");
+    active      = prm.get_bool("Estimate error");
+    every_steps = prm.get_integer("Every steps");
+    prm.leave_subsection();
+    VPContactCheckParameter(active || !for_adaptive_cycles,
+                            "Error estimate/Estimate error",
+                            std::string("false"),
+                            "adaptive cycles refine by the estimate's cell "
+                            "indicators. Set it to true, or use Mesh "
+                            "refinement/Strategy = uniform.");
+  }
+
+
+
+  template <int dim>
+  bool
+  ErrorEstimator<dim>::is_active() const
+  {
+    return active;
+  }
+
+
+
+  template <int dim>
+  bool
+  ErrorEstimator<dim>::estimates_step(const unsigned int n,
+                                      const unsigned int n_steps) const
+  {
+    // Step 0 always: it stores the initial rate G_0 of the time part.
+    return active && (n % every_steps == 0 || n == n_steps);
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  void
+  ErrorEstimator<dim>::evaluate_fields(const std::size_t        i,
+                                       const double            *entries,
+                                       SymmetricTensor<2, dim> *strain,
+                                       Tensor<1, dim>          *gradient,
+                                       double                  *zeta) const
+  {
+    // The strain, damage gradient and damage of the solution at the points
+    // of cell i, from the cell's nodal values read once (the same sums, in
+    // the same order, as CellKinematics::strains() and the others).
+    const auto                 &cell = (*cells)[i];
+    const Tensor<1, dim> *const grad = kinematics->shape_gradients(cell);
+    std::array<std::array<double, max_nodes>, dim + 1> u;
+    for (unsigned int d = 0; d < (damage ? dim + 1 : dim); ++d)
+      kinematics->nodal_values(cell,
+                               entries,
+                               d,
+                               make_array_view(&u[d][0], &u[d][0] + n_nodes));
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        Tensor<2, dim> du;
+        Tensor<1, dim> g;
+        double         z = 0;
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          {
+            const Tensor<1, dim> &G = grad[q * n_nodes + a];
+            for (unsigned int d = 0; d < dim; ++d)
+              du[d] += u[d][a] * G;
+            if (damage)
+              {
+                g += u[dim][a] * G;
+                z += u[dim][a] * kinematics->shape_value(q, a);
+              }
+          }
+        strain[q]   = symmetrize(du);
+        gradient[q] = g;
+        zeta[q]     = (damage ? z : 1.);
+      }
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  double
+  ErrorEstimator<dim>::first_pass(const std::size_t           i,
+                                  const double               *entries,
+                                  const ViscoplasticLaw<dim> &law,
+                                  const bool                  initial)
+  {
+    // On cell i: the discrete fields at the points (kept for the second
+    // pass), int_K phi_a q_h for every node a and component q of the
+    // recovered fields, and the squared norm of G_n - G_0, which needs
+    // nothing recovered (at n = 0, G_0 is stored instead).
+    constexpr unsigned int n_c    = n_fields<dim, damage>;
+    const auto             points = history->get_data((*cells)[i]);
+    const auto             rates  = history->initial_rates((*cells)[i]);
+    const auto             JxW    = history->JxW((*cells)[i]);
+    std::array<SymmetricTensor<2, dim>, max_points> strain;
+    std::array<Tensor<1, dim>, max_points>          gradient;
+    std::array<double, max_points>                  zeta;
+    evaluate_fields<damage>(i, entries, &strain[0], &gradient[0], &zeta[0]);
+    double *const f = &point_values[i * n_q * n_c];
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+        {
+          f[q * n_c + c]                 = points[q].stress.access_raw_entry(c);
+          f[q * n_c + n_tensor<dim> + c] = strain[q].access_raw_entry(c);
+          if (damage && c < dim)
+            f[q * n_c + 2 * n_tensor<dim> + c] = gradient[q][c];
+        }
+    double *const m = &moments[i * n_nodes * n_c];
+    std::fill(m, m + n_nodes * n_c, 0.);
+    double time = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          {
+            const double w = kinematics->shape_value(q, a) * JxW[q];
+            for (unsigned int c = 0; c < n_c; ++c)
+              m[a * n_c + c] += w * f[q * n_c + c];
+          }
+        const auto rate = law.rate(points[q].stress, strain[q], zeta[q]);
+        if (initial)
+          rates[q] = rate;
+        const auto change = rate - rates[q];
+        time += scalar_product(change, change) * JxW[q];
+      }
+    return time;
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  void
+  ErrorEstimator<dim>::gather_nodes(const std::size_t begin,
+                                    const std::size_t end)
+  {
+    // Local nodes begin to end (owned and ghost) of the cells without
+    // hanging nodes: the sum of the moments of the cells that share each.
+    constexpr unsigned int n_c    = n_fields<dim, damage>;
+    double *const          values = recovered.begin();
+    for (std::size_t j = begin; j < end; ++j)
+      {
+        double node[n_c] = {};
+        for (unsigned int s = slot_start[j]; s < slot_start[j + 1]; ++s)
+          {
+            const double *const cell_moments
+              = &moments[std::size_t(slots[s]) * n_c];
+            for (unsigned int c = 0; c < n_c; ++c)
+              node[c] += cell_moments[c];
+          }
+        std::copy_n(node, n_c, values + j * n_c);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::add_constrained_cells()
+  {
+    // The moments of the (few) cells with hanging nodes: a constrained
+    // node's go to the nodes it hangs on, with the constraint's weights (as
+    // AffineConstraints::distribute_local_to_global() would add them).
+    double *const values      = recovered.begin();
+    const auto   &partitioner = *lumped_mass.get_partitioner();
+    for (const std::size_t i : constrained_cells)
+      for (unsigned int a = 0; a < n_nodes; ++a)
+        {
+          const double *const cell_moments
+            = &moments[(i * n_nodes + a) * n_components];
+          const auto dof = node_indices[i * n_nodes + a];
+          if (!constraints.is_constrained(dof))
+            {
+              double *const node
+                = values
+                  + node_locals[i * n_nodes + a] * std::size_t(n_components);
+              for (unsigned int c = 0; c < n_components; ++c)
+                node[c] += cell_moments[c];
+            }
+          else
+            for (const auto &entry : *constraints.get_constraint_entries(dof))
+              {
+                double *const node = values
+                                     + partitioner.global_to_local(entry.first)
+                                         * std::size_t(n_components);
+                for (unsigned int c = 0; c < n_components; ++c)
+                  node[c] += entry.second * cell_moments[c];
+              }
+        }
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  void
+  ErrorEstimator<dim>::project_to_nodes()
+  {
+    // sum_K int_K phi_i q_h for every component q of the recovered fields,
+    // from the moments of the first pass, in one exchange; divided by the
+    // lumped mass; then the hanging nodes take their parents' average.
+    const auto       &partitioner = *lumped_mass.get_partitioner();
+    const std::size_t n_local
+      = partitioner.locally_owned_size() + partitioner.n_ghost_indices();
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      n_local,
+      [&](const std::size_t begin, const std::size_t end) {
+        gather_nodes<damage>(begin, end);
+      },
+      256);
+    add_constrained_cells();
+    recovered.compress(VectorOperation::add);
+    double *const values = recovered.begin();
+    for (unsigned int j = 0; j < partitioner.locally_owned_size(); ++j)
+      if (lumped_mass.local_element(j) > 0)
+        for (unsigned int c = 0; c < n_components; ++c)
+          values[j * std::size_t(n_components) + c]
+            /= lumped_mass.local_element(j);
+    recovered.update_ghost_values();
+    for (std::size_t h = 0; h < hanging_nodes.size(); ++h)
+      for (unsigned int c = 0; c < n_components; ++c)
+        {
+          double value = 0;
+          for (unsigned int p = hanging_start[h]; p < hanging_start[h + 1]; ++p)
+            value
+              += hanging_parents[p].second
+                 * values[hanging_parents[p].first * std::size_t(n_components)
+                          + c];
+          values[hanging_nodes[h] * std::size_t(n_components) + c] = value;
+        }
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  void
+  ErrorEstimator<dim>::second_pass(const std::size_t i)
+  {
+    // On cell i: the squared distances between the recovered fields,
+    // sum_a N_a(x_q) v_a, and the discrete ones kept by the first pass, and
+    // the cell's indicator (each cell writes only its own entries).
+    constexpr unsigned int    n_c    = n_fields<dim, damage>;
+    const auto                JxW    = history->JxW((*cells)[i]);
+    const double *const       f      = &point_values[i * n_q * n_c];
+    const double *const       values = recovered.begin();
+    const unsigned int *const nodes  = &node_locals[i * n_nodes];
+    double                    stress = 0, strain = 0, gradient = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        double star[n_c] = {};
+        for (unsigned int a = 0; a < n_nodes; ++a)
+          {
+            const double        N = kinematics->shape_value(q, a);
+            const double *const v = values + std::size_t(nodes[a]) * n_c;
+            for (unsigned int c = 0; c < n_c; ++c)
+              star[c] += N * v[c];
+          }
+        // The differences as tensors, so that their norms are summed as
+        // SymmetricTensor's scalar_product() sums them.
+        SymmetricTensor<2, dim> stress_error, strain_error;
+        Tensor<1, dim>          gradient_error;
+        for (unsigned int c = 0; c < n_tensor<dim>; ++c)
+          {
+            stress_error.access_raw_entry(c) = star[c] - f[q * n_c + c];
+            strain_error.access_raw_entry(c)
+              = star[n_tensor<dim> + c] - f[q * n_c + n_tensor<dim> + c];
+            if (damage && c < dim)
+              gradient_error[c] = star[2 * n_tensor<dim> + c]
+                                  - f[q * n_c + 2 * n_tensor<dim> + c];
+          }
+        stress += scalar_product(stress_error, stress_error) * JxW[q];
+        strain += scalar_product(strain_error, strain_error) * JxW[q];
+        gradient += gradient_error.norm_square() * JxW[q];
+      }
+    CellNorms &norm = norms[i];
+    norm.stress     = stress;
+    norm.strain     = strain;
+    norm.damage     = gradient * damage_weights[i];
+    const float eta = std::sqrt(norm.stress) + std::sqrt(norm.strain)
+                      + std::sqrt(norm.damage);
+    const unsigned int index = (*cells)[i]->active_cell_index();
+    indicators[index]        = std::max(indicators[index], eta);
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  void
+  ErrorEstimator<dim>::passes(const unsigned int          n,
+                              const double               *entries,
+                              const ViscoplasticLaw<dim> &law)
+  {
+    // Two passes over the cells in the threads, around the projection: the
+    // moments (and the time part), then the norms. The ghost entries are
+    // written by the projection's sums, so they are marked as such first.
+    recovered.zero_out_ghost_values();
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      cells->size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          norms[i].time = first_pass<damage>(i, entries, law, n == 0);
+      },
+      64);
+    project_to_nodes<damage>();
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      cells->size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          second_pass<damage>(i);
+      },
+      64);
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  ErrorEstimator<dim>::estimate_step(const unsigned int          n,
+                                     const double                k,
+                                     const double               *entries,
+                                     const ViscoplasticLaw<dim> &law,
+                                     const double                youngs_modulus)
+  {
+    // The number of recovered components is fixed at compile time in the
+    // passes, so that their loops over the components are unrolled.
+    if (with_damage)
+      passes<true>(n, entries, law);
+    else
+      passes<false>(n, entries, law);
+    return sum_norms(k, youngs_modulus);
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  ErrorEstimator<dim>::sum_norms(const double k, const double youngs_modulus)
+  {
+    // The cells' norms summed in the cells' order (the same bits with any
+    // number of threads), then over the ranks.
+    double sums[4] = {0, 0, 0, 0};
+    for (const CellNorms &c : norms)
+      {
+        sums[0] += c.stress;
+        sums[1] += c.strain;
+        sums[2] += c.damage;
+        sums[3] += c.time;
+      }
+    Utilities::MPI::sum(ArrayView<const double>(sums, 4),
+                        triangulation->get_communicator(),
+                        ArrayView<double>(sums, 4));
+    ErrorEstimate estimate;
+    estimate.space
+      = std::sqrt(sums[0]) + std::sqrt(sums[1]) + std::sqrt(sums[2]);
+    estimate.time = (1. + 1. / youngs_modulus) * 0.5 * k * std::sqrt(sums[3]);
+    if (estimate.sum() > largest_sum.sum())
+      largest_sum = estimate;
+    largest_part.space = std::max(largest_part.space, estimate.space);
+    largest_part.time  = std::max(largest_part.time, estimate.time);
+    return estimate;
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  ErrorEstimator<dim>::largest() const
+  {
+    return largest_sum;
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  ErrorEstimator<dim>::largest_parts() const
+  {
+    return largest_part;
+  }
+
+
+
+  template <int dim>
+  const Vector<float> &
+  ErrorEstimator<dim>::cell_indicators() const
+  {
+    return indicators;
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, double>
+  ErrorEstimator<dim>::running_maxima() const
+  {
+    return {{"estimate_space", largest_sum.space},
+            {"estimate_time", largest_sum.time},
+            {"estimate_space_max", largest_part.space},
+            {"estimate_time_max", largest_part.time}};
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::restore_running_maxima(
+    const std::map<std::string, double> &maxima)
+  {
+    const auto value = [&](const std::string &name) {
+      const auto found = maxima.find(name);
+      return found == maxima.end() ? 0. : found->second;
+    };
+    largest_sum  = {value("estimate_space"), value("estimate_time")};
+    largest_part = {value("estimate_space_max"), value("estimate_time_max")};
+  }
+
+
+
+  template class ErrorEstimator<2>;
+  template class ErrorEstimator<3>;
+} // namespace VPContact

@@ -1,0 +1,387 @@
+// The simulator's parameters, construction, and time loop: the steps of the
+// paper's scheme (14) in order.
+#include <vpcontact/simulator/simulator.h>
+
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <functional>
+#include <limits>
+
+namespace VPContact
+{
+  namespace
+  {
+    // The section "Damage", parsed before the element is built: whether
+    // the scene has damage decides whether the FESystem has a damage
+    // component. Its owner parses it, and the simulator asks the owner.
+    template <int dim>
+    const DamageModel<dim> &
+    parsed_damage_model(DamageModel<dim> &model, ParameterHandler &prm)
+    {
+      model.parse_parameters(prm);
+      return model;
+    }
+
+    // The section "Geometry", parsed first: its cell type chooses the
+    // element and the triangulation.
+    template <int dim>
+    Geometry<dim>
+    parsed_geometry(ParameterHandler  &prm,
+                    const std::string &directory,
+                    const MPI_Comm     communicator)
+    {
+      Geometry<dim> geometry;
+      geometry.parse_parameters(prm, directory, communicator);
+      return geometry;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      std::to_string(dim),
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the scene: 2 or 3.");
+    Geometry<dim>::declare_parameters(prm);
+    ElasticMaterial<dim>::declare_parameters(prm);
+    ViscoplasticityParameters<dim>::declare_parameters(prm);
+    DamageModel<dim>::declare_parameters(prm);
+    BoundaryConditions<dim>::declare_parameters(prm);
+    TrescaFriction<dim>::declare_parameters(prm);
+    InitialConditions::declare_parameters(prm);
+    TimeDiscretization::declare_parameters(prm);
+    LinearSolver::declare_parameters(prm);
+    DamageProblem<dim>::declare_parameters(prm);
+    IncrementPredictor::declare_parameters(prm);
+    OutputWriter<dim>::declare_parameters(prm);
+    Verification<dim>::declare_parameters(prm);
+    MonitorPoints<dim>::declare_parameters(prm);
+    ErrorEstimator<dim>::declare_parameters(prm);
+    ConvergenceStudy<dim>::declare_parameters(prm);
+    Checkpointing::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(ParameterHandler  &prm,
+                            const std::string &parameter_directory,
+                            const MPI_Comm     communicator)
+    : mpi_communicator(communicator)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
+    // The timer is not tied to the communicator: its summary is rank 0's
+    // view, and an input error thrown while the simulator is built does not
+    // trigger TimerOutput's collective clean-up in its destructor.
+    , computing_timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , geometry(parsed_geometry<dim>(prm, parameter_directory, communicator))
+    , discretization(geometry.simplex_cells(),
+                     parsed_damage_model(damage_model, prm).is_active())
+    , mesh(discretization.make_triangulation(communicator))
+    , triangulation(*mesh)
+    , fe(discretization.finite_element())
+    , quadrature(discretization.quadrature())
+    , mapping(discretization.mapping())
+    , dof_handler(triangulation)
+  {
+    material.parse_parameters(prm);
+    viscoplasticity.parse_parameters(prm);
+    viscoplastic_law = viscoplasticity.create_law(prm);
+    boundary_conditions.parse_parameters(prm);
+    friction.parse_parameters(prm);
+    initial_conditions.parse_parameters(prm);
+    time_discretization.parse_parameters(prm);
+    displacement.solver.parse_parameters(prm);
+    increment_predictor.parse_parameters(prm);
+    output_writer.parse_parameters(prm);
+    monitor_points.parse_parameters(prm);
+    verification.parse_parameters(prm, fe.n_components());
+    convergence_study.parse_parameters(prm,
+                                       output_writer.directory(),
+                                       time_discretization);
+    geometry.set_finest_growth(convergence_study.refinement().largest_growth(
+                                 geometry.global_refinements()),
+                               convergence_study.refinement().size_entries());
+    checkpointing.parse_parameters(prm, output_writer.base_directory());
+    error_estimator
+      .parse_parameters(prm, convergence_study.refinement().needs_indicators());
+    if (damage_model.is_active())
+      damage_problem
+        = std::make_unique<DamageProblem<dim>>(prm,
+                                               damage_model,
+                                               time_discretization,
+                                               displacement.solver,
+                                               output_writer.directory(),
+                                               computing_timer,
+                                               mpi_communicator);
+    // The mesh file may change under the same name between a run and its
+    // resumption.
+    if (const std::string checksum = geometry.mesh_file_checksum();
+        !checksum.empty())
+      checkpointing.record_problem_input("Geometry/Mesh file (CRC-32)",
+                                         checksum);
+    // A checkpoint holds one run's state; the state of a sequence of cycles
+    // (the table so far, the indicators of the current cycle) is not in it.
+    AssertThrow(
+      convergence_study.n_cycles() == 1
+        || (!checkpointing.writes_periodically() && !checkpointing.resume()),
+      ExcMessage("Checkpoint: runs with refinement cycles (Mesh "
+                 "refinement/Number of cycles = "
+                 + std::to_string(convergence_study.n_cycles())
+                 + ") are not checkpointed in this release. Set "
+                   "Checkpoint/Every steps = 0, Checkpoint/Every seconds = 0 "
+                   "and Resume from checkpoint = false, or run the mesh of "
+                   "one cycle as a single run."));
+    check_stability_limits();
+    check_simplex_support();
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first < dim)
+        displacement.shape_functions.push_back(i);
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::~Simulator()
+  {
+    // Members are destroyed in reverse order of declaration, the matrices
+    // before the linear solver; a factorization (MUMPS) must go first.
+    displacement.solver.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    // Everything that can be wrong with the input is checked before the
+    // first solve: parameters (in the constructor), the output folder, the
+    // mesh and its boundary ids, the reference compared with.
+    output_writer.prepare_directory(mpi_communicator);
+    if (!discretization.simplex())
+      checkpointing.check_folders(output_writer.directory(), mpi_communicator);
+    make_mesh();
+    convergence_study.prepare(mpi_communicator);
+    for (unsigned int cycle = 0; cycle < convergence_study.n_cycles(); ++cycle)
+      {
+        if (cycle > 0)
+          refine_mesh();
+        run_cycle(cycle);
+        if (checkpointing.stopped())
+          return;
+      }
+    pcout << convergence_study.table_text(
+      output_writer.base_directory(),
+      output_writer.deterministic_screen_output())
+          << std::flush;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_cycle(const unsigned int cycle)
+  {
+    // One run over [0, T] on the current mesh: set up the discrete problem,
+    // then march in time.
+    Timer              timer;
+    const unsigned int first_step = setup_cycle(cycle);
+    if (march(first_step))
+      return;
+    output_writer.finish_field_output(mpi_communicator);
+    print_summary(timer.wall_time());
+    if (output_writer.report_solve_floor())
+      report_solve_floor();
+    timer.stop();
+    convergence_study.finish_cycle(triangulation,
+                                   dof_handler.n_dofs(),
+                                   time_discretization,
+                                   error_estimator,
+                                   timer.wall_time()
+                                     - convergence_study.diagnostics_time(),
+                                   output_writer.base_directory(),
+                                   mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::setup_cycle(const unsigned int cycle)
+  {
+    // The mesh's degrees of freedom, quadrature data, damage problem and
+    // matrix; returns the first step to compute.
+    start_cycle(cycle);
+    setup_dofs();
+    setup_stress_history();
+    if (damage_problem)
+      {
+        damage_problem->setup(dof_handler,
+                              quadrature,
+                              locally_owned_dofs,
+                              locally_relevant_dofs,
+                              solution_owned);
+        ghosts.copy(solution_owned, solution);
+      }
+    // A resumed run takes the state of its checkpoint's step and continues
+    // after it (simulator_checkpoint.cc).
+    const unsigned int first_step
+      = (checkpointing.resume() ? restore_checkpoint() + 1 : 1);
+    assemble_stiffness_matrix();
+    initialize_linear_solver();
+    print_header();
+    return first_step;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::march(const unsigned int first_step)
+  {
+    // From here on SIGINT/SIGTERM/SIGUSR1 stop a single run at the end of a
+    // step, with a checkpoint (runs with cycles are not checkpointed).
+    // Returns whether the run stopped so.
+    const auto signal_catcher
+      = (checkpointing.stops_on_signal() && convergence_study.n_cycles() == 1
+             && !discretization.simplex() ?
+           std::make_unique<StopSignalCatcher>() :
+           nullptr);
+    try
+      {
+        if (!checkpointing.resume())
+          {
+            compute_initial_state();
+            finish_step(0, 0.);
+          }
+        for (unsigned int n = first_step; n <= time_discretization.n_steps();
+             ++n)
+          {
+            Timer step_timer;
+            solve_step(n);
+            step_timer.stop();
+            finish_step(n, step_timer.wall_time());
+            if (signal_catcher || checkpointing.writes_periodically())
+              if (checkpoint_after_step(n))
+                return true;
+          }
+      }
+    catch (...)
+      {
+        // The fields written before the error stay readable: the piece
+        // being written in the background is finished and recorded.
+        output_writer.finish_field_output_after_error();
+        throw;
+      }
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::finish_step(const unsigned int n, const double wall_time)
+  {
+    // The error estimate of step n (which also gives adaptive cycles their
+    // indicators), then its statistics and output.
+    postprocess_step(n, wall_time, estimate_error(n));
+  }
+
+
+
+  template <int dim>
+  ErrorEstimate
+  Simulator<dim>::estimate_error(const unsigned int n)
+  {
+    if (!error_estimator.estimates_step(n, time_discretization.n_steps()))
+      return {std::numeric_limits<double>::quiet_NaN(),
+              std::numeric_limits<double>::quiet_NaN()};
+    TimerOutput::Scope t(computing_timer, "Error estimate");
+    return error_estimator.estimate_step(n,
+                                         time_discretization.step_size(),
+                                         cell_kinematics.local_entries(
+                                           solution),
+                                         *viscoplastic_law,
+                                         material.youngs_modulus());
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::stopped_for_resume() const
+  {
+    return checkpointing.stopped();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_initial_state()
+  {
+    // u_0 = 0 and sigma_0 = 0 (set up by setup_dofs and setup_stress_history)
+    // are the paper's data. Elastic equilibrium solves the elastic problem
+    // with the load at t = 0, starting from that zero state, without the
+    // viscoplastic rate: then sigma_0 = E eps(u_0).
+    last_linear_iterations = 0;
+    if (initial_conditions.elastic_equilibrium())
+      {
+        solve_increment(0., false);
+        update_stress(0);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_step(const unsigned int n)
+  {
+    // Steps 1-3 of the scheme (predictor, displacement, stress) and step 4
+    // (damage). The damage step uses only data of step n-1: the source
+    // phi_{n-1} stored by the assembly of step 2, and zeta_{n-1}. zeta_n
+    // enters the solution only after the stress update, which still reads
+    // zeta_{n-1}.
+    //
+    // So the damage step need not wait for the displacement: with the
+    // explicit scheme it runs beside the first displacement solve, as soon
+    // as the first assembly has stored the source (solve_increment()). It
+    // reads the damage entries of the solution, which the increment leaves
+    // alone and which is only updated after the active-set loop, and the
+    // source at the points, which the later active-set iterations reuse
+    // as stored (assemble_rhs() with predictor_stored). The second thread
+    // may meanwhile write the new stress at the points
+    // (update_stress_ahead()), which the damage step does not read. The
+    // implicit scheme's Newton iterations keep the order of the steps.
+    const std::function<void()> damage_step = [this, n]() {
+      damage_problem->solve(n, solution_owned, stress_history);
+    };
+    if (viscoplasticity.implicit())
+      {
+        solve_increment_implicit(time_discretization.time(n));
+        if (damage_problem)
+          damage_step();
+      }
+    else
+      solve_increment(time_discretization.time(n),
+                      true,
+                      damage_problem ? damage_step : std::function<void()>());
+    update_stress(n);
+    if (damage_problem)
+      {
+        damage_problem->store(n, solution_owned);
+        ghosts.copy(solution_owned, solution);
+      }
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace VPContact

@@ -1,0 +1,578 @@
+// The simulator's output: cell-averaged stresses, the statistics row of every
+// step, the screen, and the fields for ParaView.
+#include <vpcontact/input/input_error.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/material/stress_measures.h>
+#include <vpcontact/simulator/simulator.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <cstdio>
+#include <fstream>
+#include <utility>
+
+namespace VPContact
+{
+  namespace
+  {
+    // Names of the independent stress components, in the order of
+    // SymmetricTensor's unrolled index: xx, yy, (zz,) xy, (xz, yz).
+    template <int dim>
+    std::vector<std::string>
+    stress_component_names()
+    {
+      if (dim == 2)
+        return {"stress_xx", "stress_yy", "stress_xy"};
+      return {"stress_xx",
+              "stress_yy",
+              "stress_zz",
+              "stress_xy",
+              "stress_xz",
+              "stress_yz"};
+    }
+
+    // The x component of the contact status vector as the scalar field
+    // contact_status (the others are unused).
+    template <int dim>
+    class ContactStatusField : public DataPostprocessorScalar<dim>
+    {
+    public:
+      ContactStatusField()
+        : DataPostprocessorScalar<dim>("contact_status", update_values)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>>                &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          computed[q](0) = inputs.solution_values[q](0);
+      }
+    };
+
+    // The tangential traction of the contact nodes in the displacement
+    // components of a vector (FrictionActiveSet::fill_output()): in 2D the
+    // scalar sigma_tau along the node's tangent, in the x component; in 3D
+    // the vector sigma_tau.
+    template <int dim>
+    class TractionField : public DataPostprocessor<dim>
+    {
+    public:
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>>                &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          for (unsigned int c = 0; c < computed[q].size(); ++c)
+            computed[q](c) = inputs.solution_values[q](c);
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return std::vector<std::string>(dim == 2 ? 1 : dim,
+                                        "tangential_traction");
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        return std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>(
+          dim == 2 ? 1 : dim,
+          dim == 2 ? DataComponentInterpretation::component_is_scalar :
+                     DataComponentInterpretation::component_is_part_of_vector);
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values;
+      }
+    };
+
+    // DataOut, with the patches it built handed out, so that a FieldWriter
+    // can write them. They are moved out rather than copied: a copy
+    // allocated every cell's patch data once more.
+    template <int dim>
+    class PatchDataOut : public DataOut<dim>
+    {
+    public:
+      std::vector<DataOutBase::Patch<dim, dim>>
+      release_patches()
+      {
+        return std::move(this->patches);
+      }
+
+      /// The names of the fields and which of them form vectors, known once
+      /// the vectors are added.
+      std::vector<std::string>
+      field_names() const
+      {
+        return this->get_dataset_names();
+      }
+      VectorRanges
+      vector_ranges() const
+      {
+        return this->get_nonscalar_data_ranges();
+      }
+    };
+
+
+
+    // What the fields of one output are built from: a DataOut with the
+    // vectors and postprocessors it refers to, all owned here, so that the
+    // patches can be built in the background while the simulator's vectors
+    // change (see Simulator::write_fields()).
+    template <int dim>
+    struct FieldSources
+    {
+      PatchDataOut<dim>           data_out;
+      LA::MPI::BlockVector        solution, status, traction;
+      ContactStatusField<dim>     status_field;
+      TractionField<dim>          traction_field;
+      Vector<double>              von_mises, subdomain;
+      std::vector<Vector<double>> components;
+    };
+
+
+
+    // Copies of the cell fields into @p sources, added to its DataOut: the
+    // cell averages of the stress (its von Mises norm and its @p components)
+    // and the rank @p owner that owns the cells.
+    template <int dim>
+    void
+    add_cell_fields(FieldSources<dim>                 &sources,
+                    const Vector<double>              &von_mises,
+                    const std::vector<Vector<double>> &components,
+                    const types::subdomain_id          owner)
+    {
+      sources.von_mises  = von_mises;
+      sources.components = components;
+      sources.data_out.add_data_vector(sources.von_mises, "von_mises");
+      const auto names_of_stress = stress_component_names<dim>();
+      for (unsigned int c = 0; c < components.size(); ++c)
+        sources.data_out.add_data_vector(sources.components[c],
+                                         names_of_stress[c]);
+      sources.subdomain.reinit(von_mises.size());
+      sources.subdomain = owner;
+      sources.data_out.add_data_vector(sources.subdomain, "subdomain");
+    }
+
+
+
+    // A ghosted copy of @p owned in the blocks of the numbering
+    // (displacement, damage), each with contiguous owned indices: what
+    // DataOut needs to build its own ghosted vector from it on several
+    // ranks.
+    template <int dim>
+    LA::MPI::BlockVector
+    block_copy(const LA::MPI::Vector        &owned,
+               const IndexSet               &owned_dofs,
+               const IndexSet               &relevant_dofs,
+               const types::global_dof_index n_u,
+               const MPI_Comm                communicator)
+    {
+      const types::global_dof_index n = owned_dofs.size();
+      std::vector<IndexSet>         owned_blocks{owned_dofs.get_view(0, n_u)};
+      std::vector<IndexSet> relevant_blocks{relevant_dofs.get_view(0, n_u)};
+      if (n > n_u)
+        {
+          owned_blocks.push_back(owned_dofs.get_view(n_u, n));
+          relevant_blocks.push_back(relevant_dofs.get_view(n_u, n));
+        }
+      LA::MPI::BlockVector blocks(owned_blocks, communicator);
+      const double        *entry = owned.begin();
+      for (unsigned int b = 0; b < blocks.n_blocks(); ++b)
+        {
+          std::copy_n(entry,
+                      blocks.block(b).locally_owned_size(),
+                      blocks.block(b).begin());
+          entry += blocks.block(b).locally_owned_size();
+        }
+      LA::MPI::BlockVector ghosted(owned_blocks, relevant_blocks, communicator);
+      ghosted = blocks;
+      return ghosted;
+    }
+
+    std::string
+    format(const char *pattern, const double value)
+    {
+      char buffer[64];
+      std::snprintf(buffer, sizeof(buffer), pattern, value);
+      return buffer;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::print_header() const
+  {
+    const unsigned int n_ranks
+      = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    pcout << "vpcontact: " << dim << "D quasistatic viscoplastic body ("
+          << (dim == 3 ? "3D" :
+              material.plane_hypothesis()
+                  == ElasticMaterial<dim>::PlaneHypothesis::plane_stress ?
+                         "plane stress" :
+                         "plane strain")
+          << "), E = " << material.youngs_modulus()
+          << ", nu = " << material.poisson_ratio() << '\n'
+          << "  viscoplastic law: " << viscoplastic_law->description() << '\n'
+          << "  initial state: " << initial_conditions.description() << '\n'
+          << "  damage: " << damage_model.description() << '\n'
+          << "  boundary: " << boundary_conditions.summary() << '\n'
+          << "  contact: "
+          << (!boundary_conditions.has_contact_boundary() ?
+                "none" :
+              friction_problem ?
+                "bilateral (u.nu = 0) with Tresca friction, primal-dual "
+                "active set" :
+                "bilateral (u.nu = 0), frictionless (friction bound 0)")
+          << '\n'
+          << "  mesh: " << triangulation.n_global_active_cells() << " cells"
+          << (discretization.simplex() ?
+                " (" + discretization.description() + ")" :
+                std::string())
+          << ", " << dof_handler.n_dofs() << " dofs" << '\n'
+          << "  time: T = " << time_discretization.end_time()
+          << ", k = " << time_discretization.step_size() << ", "
+          << time_discretization.n_steps() << " steps\n";
+    if (!output_writer.deterministic_screen_output())
+      pcout << "  running on " << n_ranks << " MPI rank(s); output in "
+            << output_writer.directory() << "/\n";
+    pcout << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_finite(const StepMeasures &measures,
+                               const unsigned int  n) const
+  {
+    // The state of step n is checked before anything of it is written, so
+    // that the output holds only finite steps.
+    std::string quantity;
+    if (!measures.u_finite)
+      quantity = "the displacement u";
+    else if (!std::isfinite(measures.energy))
+      quantity = "the stress (its energy)";
+    else if (!measures.zeta_finite)
+      quantity = "the damage zeta";
+    // A displacement far beyond the body's size is no longer small strain:
+    // an unstable or unbounded step, stopped as the stress is (see
+    // update_stress()).
+    const double u_limit = viscoplasticity.divergence_limit() * body_size;
+    AssertThrow(!quantity.empty() || measures.u_max <= u_limit,
+                ExcMessage("Step " + std::to_string(n)
+                           + " (t = " + to_text(time_discretization.time(n))
+                           + "): the displacement reached "
+                           + to_text(measures.u_max)
+                           + " m, more than Viscoplasticity/Divergence limit "
+                             "x the body's size = "
+                           + to_text(u_limit)
+                           + " m. The viscoplastic step is unstable or the "
+                             "body is not held; check the law's data and "
+                             "Time/Time step. The output up to the step "
+                             "before is complete in "
+                           + output_writer.directory() + "."));
+    AssertThrow(
+      quantity.empty(),
+      ExcMessage(
+        "Step " + std::to_string(n)
+        + " (t = " + to_text(time_discretization.time(n)) + "): " + quantity
+        + " is not finite (NaN or infinity). Inputs that can cause this: "
+          "loads that are not finite somewhere (Boundary conditions/Traction, "
+          "Body force, Prescribed displacement), a damage source that is not "
+          "(Damage/Source), or material data whose products overflow "
+          "(Material, Viscoplasticity). The output up to the step before "
+          "is complete in "
+        + output_writer.directory() + "."));
+  }
+
+
+
+  template <int dim>
+  std::string
+  Simulator<dim>::add_step_statistics(const unsigned int  n,
+                                      const double        step_wall_time,
+                                      const StepMeasures &measures)
+  {
+    // A new row of statistics.csv with what every scene reports, and the
+    // start of the step's screen line.
+    const double time = time_discretization.time(n);
+    statistics.start_row();
+    statistics.add_value("step", n);
+    statistics.add_value("time", time);
+    statistics.add_value("cells",
+                         static_cast<unsigned long long>(
+                           triangulation.n_global_active_cells()));
+    statistics.add_value("dofs",
+                         static_cast<unsigned long long>(dof_handler.n_dofs()));
+    statistics.add_value("linear_iterations", last_linear_iterations);
+    statistics.add_value("wall_time", step_wall_time);
+    statistics.add_value("u_max", measures.u_max);
+    statistics.add_value("von_mises_max", measures.von_mises_max);
+    statistics.add_value("elastic_energy", measures.energy);
+    monitor_points.add_statistics(solution, statistics);
+    return "step " + std::to_string(n) + "  t = " + format("%.6g", time)
+           + "  |u|max = " + format("%.6e", measures.u_max)
+           + "  von Mises max = " + format("%.6e", measures.von_mises_max)
+           + "  energy = " + format("%.6e", measures.energy);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::postprocess_step(const unsigned int   n,
+                                   const double         step_wall_time,
+                                   const ErrorEstimate &estimate)
+  {
+    TimerOutput::Scope t(computing_timer, "Postprocess and output");
+    const double       time = time_discretization.time(n);
+
+    const StepMeasures measures = measure_step();
+    check_finite(measures, n);
+    const double u_max = measures.u_max;
+    // The stress of every cell, for the fields and for the scale of the
+    // stress error, only where they are needed.
+    const bool write
+      = output_writer.writes_fields_at(n, time_discretization.n_steps());
+    Vector<double>              von_mises;
+    std::vector<Vector<double>> components;
+    if (write || verification.has_exact_stress())
+      compute_cell_stresses(von_mises, components);
+
+    std::string line = add_step_statistics(n, step_wall_time, measures);
+    if (error_estimator.estimates_step(n, time_discretization.n_steps()))
+      {
+        statistics.add_value("estimate_space", estimate.space);
+        statistics.add_value("estimate_time", estimate.time);
+      }
+    if (damage_model.is_active())
+      damage_problem->add_statistics(statistics,
+                                     line,
+                                     measures.damaged_fraction);
+    add_verification_statistics(line, time, u_max, components);
+    convergence_study.add_reference_statistics(
+      n,
+      time_discretization,
+      [this, n]() { return make_snapshot(time_discretization.time(n)); },
+      statistics,
+      line,
+      mpi_communicator);
+    if (friction_problem)
+      friction_problem->add_statistics(statistics, line);
+    if (!output_writer.deterministic_screen_output() && n > 0)
+      line
+        += "  CG its = " + std::to_string(last_linear_iterations)
+           + (friction_problem ?
+                "  AS its = " + std::to_string(friction_problem->iterations()) :
+                "")
+           + format("  (%.3f s)", step_wall_time);
+    pcout << line << std::endl;
+
+    if (write)
+      write_fields(n, von_mises, components);
+    output_writer.write_statistics(statistics, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_verification_statistics(
+    std::string                       &line,
+    const double                       time,
+    const double                       u_max,
+    const std::vector<Vector<double>> &components)
+  {
+    // The errors against the closed forms of the Verification section.
+    if (verification.is_active())
+      {
+        const auto errors
+          = verification.compute_errors(dof_handler, solution, time, u_max);
+        // The exact solution is evaluated at every quadrature point: one
+        // NaN there makes the L2 error NaN (a maximum would pass it by).
+        AssertThrow(std::isfinite(errors.l2) && std::isfinite(errors.max_nodal),
+                    ExcMessage("Verification/Exact displacement is not finite "
+                               "(NaN or infinity) somewhere at t = "
+                               + to_text(time)
+                               + ". Check it for divisions by zero, roots "
+                                 "or logarithms of negative numbers."));
+        statistics.add_value("u_error_max_nodal", errors.max_nodal);
+        statistics.add_value("u_error_L2", errors.l2);
+        // Errors are round-off in verification scenes: printed with two
+        // digits, they differ between runs only below numdiff's absolute
+        // tolerance.
+        line += "  error: nodal max = " + format("%.2e", errors.max_nodal)
+                + ", L2 = " + format("%.2e", errors.l2);
+      }
+    if (verification.has_exact_stress())
+      {
+        const double error = stress_error(time);
+        // The scale of the stress for the relative error in the summary.
+        double stress_scale = 0;
+        for (const auto &c : components)
+          stress_scale = std::max(stress_scale, c.linfty_norm());
+        verification.record_stress_error(error,
+                                         Utilities::MPI::max(stress_scale,
+                                                             mpi_communicator));
+        AssertThrow(std::isfinite(error),
+                    ExcMessage("Verification/Exact stress is not finite (NaN "
+                               "or infinity) somewhere at t = "
+                               + to_text(time) + "."));
+        statistics.add_value("stress_error_max", error);
+        line += "  stress error = " + format("%.2e", error);
+      }
+    if (verification.has_exact_damage())
+      {
+        const double error
+          = verification.damage_error(dof_handler,
+                                      solution,
+                                      damage_problem->full_dofs(),
+                                      time);
+        AssertThrow(std::isfinite(error),
+                    ExcMessage("Verification/Exact damage is not finite (NaN "
+                               "or infinity) somewhere at t = "
+                               + to_text(time) + "."));
+        statistics.add_value("damage_error_max", error);
+        line += "  damage error = " + format("%.2e", error);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_fields(const unsigned int                 n,
+                               const Vector<double>              &von_mises,
+                               const std::vector<Vector<double>> &components)
+  {
+    // The solution: displacement (a vector) and, in damage scenes, zeta;
+    // the stresses per cell, and their ranks. Copies go to the DataOut
+    // here, where the ranks exchange ghost values together; its patches
+    // (FEValues on every cell, the larger cost) are built with the write,
+    // in the background: the mesh does not change before it is waited for.
+    const auto               sources  = std::make_shared<FieldSources<dim>>();
+    PatchDataOut<dim>       &data_out = sources->data_out;
+    std::vector<std::string> names(dim, "displacement");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    if (damage_model.is_active())
+      {
+        names.emplace_back("damage");
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
+    data_out.attach_dof_handler(dof_handler);
+    const auto blocks = [&](const LA::MPI::Vector &owned) {
+      return block_copy<dim>(owned,
+                             locally_owned_dofs,
+                             locally_relevant_dofs,
+                             displacement.owned.size(),
+                             mpi_communicator);
+    };
+    sources->solution = blocks(solution_owned);
+    data_out.add_data_vector(sources->solution,
+                             names,
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+
+    // Contact nodes: status (0 none, 1 stick, 2 slip), traction sigma_tau.
+    if (friction_problem)
+      {
+        LA::MPI::Vector status(solution_owned);
+        LA::MPI::Vector traction(solution_owned);
+        friction_problem->fill_output(status, traction);
+        sources->status   = blocks(status);
+        sources->traction = blocks(traction);
+        data_out.add_data_vector(sources->status, sources->status_field);
+        data_out.add_data_vector(sources->traction, sources->traction_field);
+      }
+
+    add_cell_fields(*sources,
+                    von_mises,
+                    components,
+                    triangulation.locally_owned_subdomain());
+    FieldPatches<dim> fields;
+    fields.names         = data_out.field_names();
+    fields.vector_ranges = data_out.vector_ranges();
+    fields.build = [sources](std::vector<DataOutBase::Patch<dim, dim>> &p) {
+      sources->data_out.build_patches();
+      p = sources->data_out.release_patches();
+    };
+    output_writer.write_fields(std::move(fields),
+                               n,
+                               time_discretization.time(n),
+                               mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::print_summary(const double wall_time) const
+  {
+    pcout << '\n' << verification.summary();
+    if (error_estimator.is_active())
+      {
+        // The estimate next to the run time: what a result is worth and
+        // what it cost.
+        const ErrorEstimate largest = error_estimator.largest();
+        pcout << "Estimated error (Theorem 2's norm, largest over the steps): "
+              << format("%.3e", largest.sum()) << " (space "
+              << format("%.3e", largest.space) << ", time "
+              << format("%.3e", largest.time) << ")";
+        if (!output_writer.deterministic_screen_output())
+          pcout << " in " << format("%.3g", wall_time) << " s of run time";
+        pcout << '\n';
+      }
+    if (damage_model.is_active())
+      pcout << "Damage bounds 0 <= zeta <= 1 at every node and step: largest "
+               "violation "
+            << damage_problem->max_violation() << " (exactly 0: "
+            << (damage_problem->max_violation() == 0. ? "yes" : "NO") << ")\n";
+    if (friction_problem)
+      pcout << "Tresca conditions at every contact node and step: largest "
+               "violation "
+            << format("%.1e", friction_problem->max_violation())
+            << " of max(g, |sigma nu|) (holds to 1e-8: "
+            << (friction_problem->max_violation() < 1e-8 ? "yes" : "NO")
+            << ")\n";
+    pcout << "Run complete: " << time_discretization.n_steps()
+          << " steps; statistics in "
+          << "statistics.csv";
+    if (!output_writer.deterministic_screen_output())
+      {
+        pcout << " (folder " << output_writer.directory() << ")" << std::endl;
+        computing_timer.print_summary();
+        // On several ranks, each phase's time on the slowest and the
+        // fastest rank: how evenly the work is spread.
+        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+          computing_timer.print_wall_time_statistics(mpi_communicator);
+        // Peak resident memory of this rank (VmHWM), for the benchmarks.
+        std::ifstream status("/proc/self/status");
+        for (std::string line; std::getline(status, line);)
+          if (line.rfind("VmHWM:", 0) == 0)
+            pcout << "Peak memory (rank 0): " << line.substr(6) << std::endl;
+      }
+    pcout << std::endl;
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace VPContact

@@ -1,0 +1,270 @@
+// The displacement increment of a step: the stick/slip active-set loop
+// around the linear solves of the displacement system, the solve itself
+// (beside the damage step where the factors allow), and the solve floor.
+#include <vpcontact/fe/owned_constraints.h>
+#include <vpcontact/input/input_error.h>
+#include <vpcontact/linear_algebra/finite_values.h>
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/simulator/simulator.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <future>
+
+namespace VPContact
+{
+  template <int dim>
+  void
+  Simulator<dim>::initialize_linear_solver()
+  {
+    TimerOutput::Scope t(computing_timer, "Build preconditioner");
+    // A matrix with an infinite entry makes the factorizations fail deep
+    // inside the libraries (ML writes a dump file of it): refuse it here.
+    AssertThrow(std::isfinite(displacement.matrix.frobenius_norm()),
+                ExcMessage("The stiffness matrix is not finite: Material/"
+                           "Young's modulus = "
+                           + to_text(material.youngs_modulus())
+                           + " overflows with the cell sizes of this mesh. "
+                             "Rescale the units of the scene."));
+    displacement.solver.initialize(displacement.matrix, rigid_motions());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_increment(const double time,
+                                  const bool   with_viscoplastic_rate,
+                                  const std::function<void()> &beside)
+  {
+    if (friction_problem)
+      friction_problem->begin_step(time);
+    if (boundary_conditions.has_prescribed_displacement())
+      make_constraints(time, &solution);
+
+    // Without friction one linear solve. With friction, the primal-dual
+    // active set iteration: solve with the current stick and slip sets,
+    // recompute the friction multipliers from the residual, take the next
+    // sets; stop when no node changes. The sets of the previous step are
+    // the start (warm start). The work @p beside the solve (the damage
+    // step) runs once, in the first iteration; nothing it reads changes in
+    // the later ones (see solve_step()).
+    last_linear_iterations = 0;
+    // The first start vector: the increments of the last steps
+    // extrapolated (see IncrementPredictor); the active-set iterations of
+    // a step then start from the previous iterate.
+    if (with_viscoplastic_rate)
+      increment_predictor.predict(increment_owned);
+    for (unsigned int iteration = 1;; ++iteration)
+      {
+        assemble_rhs(time, with_viscoplastic_rate, iteration > 1);
+        if (friction_problem)
+          friction_problem->add_slip_forces(constraints, displacement.rhs);
+        if (iteration == 1 && beside)
+          solve_displacement_beside(beside);
+        else
+          solve_displacement();
+        if (!friction_problem || friction_sets_settled(time, iteration))
+          break;
+      }
+
+    AssertThrow(all_finite(increment_owned, mpi_communicator),
+                ExcMessage("The displacement increment at t = " + to_text(time)
+                           + " is not finite. The output up to the previous "
+                             "step is complete in "
+                           + output_writer.directory() + "."));
+    if (with_viscoplastic_rate)
+      increment_predictor.record(increment_owned);
+    solution_owned += increment_owned;
+    ghosts.copy(solution_owned, solution);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_displacement()
+  {
+    if (displacement.solver.preconditioner_outdated())
+      initialize_linear_solver();
+    TimerOutput::Scope t(computing_timer, "Solve");
+    copy_start_vector();
+    stress_ahead.restart();
+    last_linear_iterations
+      += displacement.solver.solve(displacement.increment, displacement.rhs);
+    take_solved_increment();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_displacement_beside(const std::function<void()> &beside)
+  {
+    // With the factors of a Cholesky factorization, the substitutions run
+    // in a second thread while this one does the work beside them, and
+    // "Solve" times only the wait for them that the work does not hide.
+    // The second thread writes only displacement.increment (and the
+    // factors' workspace); the work beside must read neither it nor
+    // displacement.rhs, and must not change the linear solver. Other
+    // methods, and the factors after the matrix changed in place, solve
+    // after the work.
+    if (displacement.solver.preconditioner_outdated())
+      initialize_linear_solver();
+    if (!displacement.solver.solves_in_background())
+      {
+        beside();
+        solve_displacement();
+        return;
+      }
+    // After the substitutions the second thread also starts on the stress
+    // update (see update_stress_ahead()) while the damage step still runs
+    // here: once the damage has spread, the damage step is the longer of
+    // the two. CellKinematics checks the increment's layout here (the check
+    // may call MPI).
+    copy_start_vector();
+    const double *const increment_entries
+      = cell_kinematics.local_entries(increment);
+    stress_ahead.restart();
+    std::future<unsigned int> solving = displacement.solver.solve_in_background(
+      displacement.increment,
+      displacement.rhs,
+      [this, increment_entries]() { update_stress_ahead(increment_entries); });
+    beside();
+    stress_ahead.arrive();
+    TimerOutput::Scope t(computing_timer, "Solve");
+    last_linear_iterations += solving.get();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::copy_start_vector()
+  {
+    // K du = b on the displacement block, whose entries lead the local
+    // entries of the full vector (see setup_dofs()), from the current
+    // increment.
+    std::copy_n(increment_owned.begin(),
+                displacement.increment.locally_owned_size(),
+                displacement.increment.begin());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::take_solved_increment()
+  {
+    // The block's solution back into the full increment, with the
+    // constrained entries from the others.
+    std::copy(displacement.increment.begin(),
+              displacement.increment.end(),
+              increment_owned.begin());
+    distribute_constraints(constraints, increment_owned);
+    ghosts.copy(increment_owned, increment);
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::friction_sets_settled(const double       time,
+                                        const unsigned int iteration)
+  {
+    // The next stick and slip sets from the multipliers of this solve.
+    // The matrix changes when a node enters or leaves the stick set (its
+    // constraints change) or, in 3D, when a slip direction turns (its slip
+    // stiffness changes); then it is reassembled.
+    const auto changes
+      = friction_problem->update(increment,
+                                 material.youngs_modulus(),
+                                 [this](const auto &cells, auto &residual) {
+                                   assemble_residual(cells, residual);
+                                 });
+    if (changes.n_stick_changed > 0)
+      check_held_while_slipping(time);
+    if (changes.n_changed == 0)
+      return true;
+    AssertThrow(
+      iteration < friction.max_iterations(),
+      ExcMessage(
+        "The stick/slip active set did not converge at t = " + to_text(time)
+        + ": after " + std::to_string(iteration) + " iterations "
+        + std::to_string(changes.n_changed)
+        + " contact node(s) still change set or slip direction. Raise Contact/Maximum active "
+          "set iterations = "
+        + std::to_string(friction.max_iterations())
+        + ", try another Contact/Complementarity factor, or (3D) raise "
+          "Contact/Slip direction tolerance = "
+        + to_text(friction.direction_tolerance())
+        + " if a displacement solver's tolerance keeps the directions "
+          "from settling. The output up "
+          "to the previous step is complete in "
+        + output_writer.directory() + "."));
+    if (changes.n_stick_changed > 0)
+      {
+        make_constraints(time, &solution);
+        assemble_stiffness_matrix();
+        initialize_linear_solver();
+      }
+    else if (changes.n_matrix_changed > 0)
+      {
+        // Only slip directions turned: the matrix changes at those nodes,
+        // and the preconditioner or factors of the matrix as it was still
+        // precondition CG well (LinearSolver::matrix_changed()).
+        friction_problem->update_slip_stiffness(constraints,
+                                                displacement.matrix);
+        displacement.solver.matrix_changed();
+      }
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::report_solve_floor()
+  {
+    // The floor of a time step: one solve of the displacement system with
+    // everything reused (matrix and preconditioner as they are, the last
+    // right-hand side), from a zero start vector.
+    LA::MPI::Vector x(displacement.increment);
+    x = 0.;
+    Timer              timer;
+    const unsigned int iterations
+      = displacement.solver.solve(x, displacement.rhs);
+    timer.stop();
+
+    // Its two kernels, each timed over ten applications: they tell how the
+    // solve scales with the ranks (scripts/bench compares them).
+    LA::MPI::Vector y(x);
+    Timer           matvec_timer;
+    for (unsigned int i = 0; i < 10; ++i)
+      displacement.matrix.vmult(y, x);
+    matvec_timer.stop();
+    Timer preconditioner_timer;
+    for (unsigned int i = 0; i < 10; ++i)
+      displacement.solver.precondition(y, displacement.rhs);
+    preconditioner_timer.stop();
+    const bool        cg = !displacement.solver.is_direct();
+    const std::string how
+      = (cg ? std::to_string(iterations) + " CG iterations" :
+              std::string("solve with the factors"));
+    pcout << "Solve floor: one displacement solve takes " << timer.wall_time()
+          << " s (" << how << ", " << displacement.matrix.m()
+          << " dofs); one matrix-vector product "
+          << 100. * matvec_timer.wall_time() << " ms, "
+          << (cg ? "one preconditioner application " :
+                   "one solve with the factors ")
+          << 100. * preconditioner_timer.wall_time() << " ms" << std::endl;
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace VPContact
