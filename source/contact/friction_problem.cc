@@ -190,7 +190,8 @@ namespace VPContact
   template <int dim>
   void
   FrictionProblem<dim>::add_statistics(Statistics  &statistics,
-                                       std::string &line)
+                                       std::string &line,
+                                       const StepQuantities & /*quantities*/)
   {
     const auto [n_stick, n_slip] = active_set.count();
     const double utilisation     = active_set.max_utilisation();
@@ -207,6 +208,29 @@ namespace VPContact
     std::snprintf(text, sizeof(text), "%.4f", utilisation);
     line += "  stick/slip = " + std::to_string(n_stick) + "/"
             + std::to_string(n_slip) + "  max|sigma_t|/g = " + text;
+  }
+
+
+
+  template <int dim>
+  std::string
+  FrictionProblem<dim>::iteration_counts() const
+  {
+    return "  AS its = " + std::to_string(last_iterations);
+  }
+
+
+
+  template <int dim>
+  std::string
+  FrictionProblem<dim>::violation_summary() const
+  {
+    char violation[32];
+    std::snprintf(violation, sizeof(violation), "%.1e", largest_violation);
+    return std::string("Tresca conditions at every contact node and step: "
+                       "largest violation ")
+           + violation + " of max(g, |sigma nu|) (holds to 1e-8: "
+           + (largest_violation < 1e-8 ? "yes" : "NO") + ")\n";
   }
 
 
@@ -233,10 +257,10 @@ namespace VPContact
   template <int dim>
   void
   FrictionProblem<dim>::write_checkpoint(
-    LA::MPI::Vector               &state,
+    LA::MPI::Vector               &sets_owned,
     std::map<std::string, double> &counters) const
   {
-    active_set.write_state(state);
+    active_set.write_state(sets_owned);
     counters["max_friction_violation"] = largest_violation;
   }
 
@@ -245,10 +269,11 @@ namespace VPContact
   template <int dim>
   void
   FrictionProblem<dim>::read_checkpoint(
-    const LA::MPI::Vector                            &state,
+    const LA::MPI::Vector & /*sets_owned*/,
+    const LA::MPI::Vector                            &sets,
     const std::function<double(const std::string &)> &counter)
   {
-    active_set.read_state(state);
+    active_set.read_state(sets);
     largest_violation = counter("max_friction_violation");
   }
 

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace VPContact
 {
@@ -232,10 +233,11 @@ namespace VPContact
 
   template <int dim>
   void
-  DamageProblem<dim>::add_statistics(Statistics  &statistics,
-                                     std::string &line,
-                                     const double fraction)
+  DamageProblem<dim>::add_statistics(Statistics           &statistics,
+                                     std::string          &line,
+                                     const StepQuantities &quantities)
   {
+    const double fraction = quantities.damaged_fraction;
     // Nodal extremes, the bound violation (which must be exactly 0), and the
     // volume fraction where zeta < 1 at the quadrature points. On a uniform
     // mesh the fraction is a multiple of the weight of a point and often
@@ -268,6 +270,21 @@ namespace VPContact
 
 
   template <int dim>
+  std::string
+  DamageProblem<dim>::violation_summary() const
+  {
+    std::ostringstream text;
+    text << "Damage bounds 0 <= zeta <= 1 at every node and step: largest "
+            "violation "
+         << largest_violation
+         << " (exactly 0: " << (largest_violation == 0. ? "yes" : "NO")
+         << ")\n";
+    return text.str();
+  }
+
+
+
+  template <int dim>
   const IndexSet &
   DamageProblem<dim>::full_dofs() const
   {
@@ -294,7 +311,8 @@ namespace VPContact
   template <int dim>
   void
   DamageProblem<dim>::read_checkpoint(
-    const LA::MPI::Vector                            &sets_owned,
+    const LA::MPI::Vector &sets_owned,
+    const LA::MPI::Vector & /*sets*/,
     const std::function<double(const std::string &)> &counter)
   {
     LA::MPI::Vector bound_sets(system.owned(), communicator);

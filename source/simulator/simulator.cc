@@ -110,14 +110,17 @@ namespace VPContact
     error_estimator
       .parse_parameters(prm, convergence_study.refinement().needs_indicators());
     if (damage_model.is_active())
-      damage_problem
-        = std::make_unique<DamageProblem<dim>>(prm,
-                                               damage_model,
-                                               time_discretization,
-                                               displacement.solver,
-                                               output_writer.directory(),
-                                               computing_timer,
-                                               mpi_communicator);
+      {
+        damage_problem
+          = std::make_unique<DamageProblem<dim>>(prm,
+                                                 damage_model,
+                                                 time_discretization,
+                                                 displacement.solver,
+                                                 output_writer.directory(),
+                                                 computing_timer,
+                                                 mpi_communicator);
+        physics.push_back(damage_problem.get());
+      }
     // The mesh file may change under the same name between a run and its
     // resumption.
     if (const std::string checksum = geometry.mesh_file_checksum();

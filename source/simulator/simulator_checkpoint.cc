@@ -141,10 +141,8 @@ namespace VPContact
                                                     0.},
                                                    {"max_damage_violation", 0.},
                                                    {"damage_rings_ahead", 0.}};
-    if (friction_problem)
-      friction_problem->write_checkpoint(sets_owned, physics_counters);
-    if (damage_problem)
-      damage_problem->write_checkpoint(sets_owned, physics_counters);
+    for (const Physics *object : physics)
+      object->write_checkpoint(sets_owned, physics_counters);
     LA::MPI::Vector sets(locally_owned_dofs,
                          locally_relevant_dofs,
                          mpi_communicator);
@@ -285,13 +283,9 @@ namespace VPContact
     // A state that does not fit the nodes is found by the ranks that own
     // them: all ranks stop together (each read calls collective functions,
     // so each is a step of its own).
-    if (friction_problem)
+    for (Physics *object : physics)
       stop_together(mpi_communicator, [&]() {
-        friction_problem->read_checkpoint(sets, counter);
-      });
-    if (damage_problem)
-      stop_together(mpi_communicator, [&]() {
-        damage_problem->read_checkpoint(sets_owned, counter);
+        object->read_checkpoint(sets_owned, sets, counter);
       });
     make_constraints(time_discretization.time(checkpoint.step), &solution);
 

@@ -334,6 +334,42 @@ namespace VPContact
 
   template <int dim>
   void
+  Simulator<dim>::collect_step_reports()
+  {
+    // The damage columns come first, the friction columns last, as in the
+    // tables of earlier runs that users compare with.
+    const auto physics_report = [this](Physics &object) {
+      return [this, &object](std::string &line, const StepReport &report) {
+        object.add_statistics(statistics, line, report.quantities);
+      };
+    };
+    step_reports.clear();
+    if (damage_problem)
+      step_reports.push_back(physics_report(*damage_problem));
+    step_reports.push_back([this](std::string &line, const StepReport &report) {
+      add_verification_statistics(line,
+                                  report.time,
+                                  report.u_max,
+                                  report.components);
+    });
+    step_reports.push_back([this](std::string &line, const StepReport &report) {
+      const unsigned int n = report.n;
+      convergence_study.add_reference_statistics(
+        n,
+        time_discretization,
+        [this, n]() { return make_snapshot(time_discretization.time(n)); },
+        statistics,
+        line,
+        mpi_communicator);
+    });
+    if (friction_problem)
+      step_reports.push_back(physics_report(*friction_problem));
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::postprocess_step(const unsigned int   n,
                                    const double         step_wall_time,
                                    const ErrorEstimate &estimate)
@@ -359,27 +395,17 @@ namespace VPContact
         statistics.add_value("estimate_space", estimate.space);
         statistics.add_value("estimate_time", estimate.time);
       }
-    if (damage_model.is_active())
-      damage_problem->add_statistics(statistics,
-                                     line,
-                                     measures.damaged_fraction);
-    add_verification_statistics(line, time, u_max, components);
-    convergence_study.add_reference_statistics(
-      n,
-      time_discretization,
-      [this, n]() { return make_snapshot(time_discretization.time(n)); },
-      statistics,
-      line,
-      mpi_communicator);
-    if (friction_problem)
-      friction_problem->add_statistics(statistics, line);
+    StepReport report{n, time, u_max, components, StepQuantities()};
+    report.quantities.damaged_fraction = measures.damaged_fraction;
+    for (const auto &add_report : step_reports)
+      add_report(line, report);
     if (!output_writer.deterministic_screen_output() && n > 0)
-      line
-        += "  CG its = " + std::to_string(last_linear_iterations)
-           + (friction_problem ?
-                "  AS its = " + std::to_string(friction_problem->iterations()) :
-                "")
-           + format("  (%.3f s)", step_wall_time);
+      {
+        line += "  CG its = " + std::to_string(last_linear_iterations);
+        for (const Physics *object : physics)
+          line += object->iteration_counts();
+        line += format("  (%.3f s)", step_wall_time);
+      }
     pcout << line << std::endl;
 
     if (write)
@@ -539,18 +565,8 @@ namespace VPContact
           pcout << " in " << format("%.3g", wall_time) << " s of run time";
         pcout << '\n';
       }
-    if (damage_model.is_active())
-      pcout << "Damage bounds 0 <= zeta <= 1 at every node and step: largest "
-               "violation "
-            << damage_problem->max_violation() << " (exactly 0: "
-            << (damage_problem->max_violation() == 0. ? "yes" : "NO") << ")\n";
-    if (friction_problem)
-      pcout << "Tresca conditions at every contact node and step: largest "
-               "violation "
-            << format("%.1e", friction_problem->max_violation())
-            << " of max(g, |sigma nu|) (holds to 1e-8: "
-            << (friction_problem->max_violation() < 1e-8 ? "yes" : "NO")
-            << ")\n";
+    for (const Physics *object : physics)
+      pcout << object->violation_summary();
     pcout << "Run complete: " << time_discretization.n_steps()
           << " steps; statistics in "
           << "statistics.csv";

@@ -35,9 +35,12 @@ namespace VPContact
                                  times);
         // g = 0 everywhere is frictionless sliding: no active set at all.
         if (g_max > 0)
-          friction_problem
-            = std::make_unique<FrictionProblem<dim>>(friction,
-                                                     mpi_communicator);
+          {
+            friction_problem
+              = std::make_unique<FrictionProblem<dim>>(friction,
+                                                       mpi_communicator);
+            physics.push_back(friction_problem.get());
+          }
         AssertThrow(!(friction_problem && viscoplasticity.implicit()),
                     ExcMessage(
                       "Viscoplasticity/Time integration = implicit is not "
@@ -48,6 +51,7 @@ namespace VPContact
                         "stability limit, or a frictionless contact "
                         "(Contact/Friction bound = 0)."));
       }
+    collect_step_reports();
   }
 
 

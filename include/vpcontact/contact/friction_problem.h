@@ -8,6 +8,7 @@
 #include <vpcontact/contact/tresca_friction.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/postprocess/statistics.h>
+#include <vpcontact/simulator/physics.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -34,7 +35,7 @@ namespace VPContact
    * changes set.
    */
   template <int dim>
-  class FrictionProblem
+  class FrictionProblem : public Physics
   {
   public:
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
@@ -122,7 +123,17 @@ namespace VPContact
     /// The step's friction columns of @p statistics and its part of the
     /// screen @p line.
     void
-    add_statistics(Statistics &statistics, std::string &line);
+    add_statistics(Statistics           &statistics,
+                   std::string          &line,
+                   const StepQuantities &quantities) override;
+
+    /// "  AS its = N": the active-set iterations of the step.
+    std::string
+    iteration_counts() const override;
+
+    /// The largest violation of the Tresca conditions over the run.
+    std::string
+    violation_summary() const override;
 
     /// The largest violation of the Tresca conditions so far (of max g).
     double
@@ -132,15 +143,17 @@ namespace VPContact
     void
     fill_output(LA::MPI::Vector &status, LA::MPI::Vector &traction) const;
 
-    /// The sets into @p state and the counters a resumed run needs.
+    /// The sets into @p sets_owned and the counters a resumed run needs.
     void
-    write_checkpoint(LA::MPI::Vector               &state,
-                     std::map<std::string, double> &counters) const;
+    write_checkpoint(LA::MPI::Vector               &sets_owned,
+                     std::map<std::string, double> &counters) const override;
 
-    /// The state write_checkpoint() saved (@p state ghosted).
+    /// The state write_checkpoint() saved (read from the ghosted @p sets).
     void
-    read_checkpoint(const LA::MPI::Vector                            &state,
-                    const std::function<double(const std::string &)> &counter);
+    read_checkpoint(
+      const LA::MPI::Vector                            &sets_owned,
+      const LA::MPI::Vector                            &sets,
+      const std::function<double(const std::string &)> &counter) override;
 
   private:
     const TrescaFriction<dim> &friction;

@@ -12,6 +12,7 @@
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/linear_algebra/linear_solver.h>
 #include <vpcontact/postprocess/statistics.h>
+#include <vpcontact/simulator/physics.h>
 #include <vpcontact/simulator/time_discretization.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -48,7 +49,7 @@ namespace VPContact
    * checkpoints).
    */
   template <int dim>
-  class DamageProblem
+  class DamageProblem : public Physics
   {
   public:
     /// The entries of the damage solvers (DamageSystem, section Solver).
@@ -91,14 +92,17 @@ namespace VPContact
     void
     store(const unsigned int n, LA::MPI::Vector &solution_owned);
 
-    /**
-     * The step's damage columns of @p statistics and its part of the screen
-     * @p line; @p fraction is the damaged volume fraction of the step.
-     */
+    /// The step's damage columns of @p statistics (the damaged volume
+    /// fraction from @p quantities) and its part of the screen @p line.
     void
-    add_statistics(Statistics  &statistics,
-                   std::string &line,
-                   const double fraction);
+    add_statistics(Statistics           &statistics,
+                   std::string          &line,
+                   const StepQuantities &quantities) override;
+
+    /// The largest violation of the bounds over the run, which must be
+    /// exactly 0.
+    std::string
+    violation_summary() const override;
 
     /// The largest violation of the bounds so far (exactly 0 expected).
     double
@@ -112,12 +116,15 @@ namespace VPContact
     /// degrees of freedom), and the counters a resumed run needs.
     void
     write_checkpoint(LA::MPI::Vector               &sets_owned,
-                     std::map<std::string, double> &counters) const;
+                     std::map<std::string, double> &counters) const override;
 
-    /// The state write_checkpoint() saved; @p counter reads a counter.
+    /// The state write_checkpoint() saved (read from @p sets_owned);
+    /// @p counter reads a counter.
     void
-    read_checkpoint(const LA::MPI::Vector &sets_owned,
-                    const std::function<double(const std::string &)> &counter);
+    read_checkpoint(
+      const LA::MPI::Vector                            &sets_owned,
+      const LA::MPI::Vector                            &sets,
+      const std::function<double(const std::string &)> &counter) override;
 
   private:
     // damage_problem.cc

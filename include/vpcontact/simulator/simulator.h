@@ -27,6 +27,7 @@
 #include <vpcontact/refinement/error_estimator.h>
 #include <vpcontact/simulator/displacement_system.h>
 #include <vpcontact/simulator/increment_predictor.h>
+#include <vpcontact/simulator/physics.h>
 #include <vpcontact/simulator/time_discretization.h>
 #include <vpcontact/simulator/work_ahead.h>
 
@@ -369,6 +370,15 @@ namespace VPContact
     };
     StepMeasures
     measure_step() const;
+    /// What the reports of a step (step_reports) read.
+    struct StepReport
+    {
+      unsigned int                       n;
+      double                             time;
+      double                             u_max;
+      const std::vector<Vector<double>> &components;
+      StepQuantities                     quantities;
+    };
     /// The partial sums of measure_step() over one chunk of the cells.
     struct StepSums
     {
@@ -397,6 +407,9 @@ namespace VPContact
     add_step_statistics(const unsigned int  n,
                         const double        step_wall_time,
                         const StepMeasures &measures);
+    /// The list step_reports, once the physics objects are built.
+    void
+    collect_step_reports();
     void
     add_verification_statistics(std::string                       &line,
                                 const double                       time,
@@ -507,6 +520,15 @@ namespace VPContact
 
     /// The damage problem, step 4 (damage scenes only).
     std::unique_ptr<DamageProblem<dim>> damage_problem;
+    /// The physics objects this scene has (damage, friction): the
+    /// simulator reports and checkpoints them through this list instead of
+    /// testing for each.
+    std::vector<Physics *> physics;
+    /// What adds to a step's statistics row and screen line, in the order
+    /// of the columns: the physics objects and the comparisons with exact
+    /// and reference solutions (collect_step_reports()).
+    std::vector<std::function<void(std::string &, const StepReport &)>>
+      step_reports;
 
     Statistics   statistics;
     unsigned int last_linear_iterations = 0;
