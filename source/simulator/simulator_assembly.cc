@@ -308,12 +308,12 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::subtract_stored_predictor_work(
+  Simulator<dim>::subtract_predictor_work(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     AssemblyScratch                                      &scratch) const
   {
-    // -(sigma_{n-1} + k G_{n-1}, eps(phi_i)) from the predictor a pass of
-    // this step stored.
+    // -(sigma_{n-1} + k G_{n-1}, eps(phi_i)) from the predictor stored at
+    // the points (by this pass, or by an earlier pass of this step).
     const auto history = stress_history.get_data(cell);
     const auto JxW     = stress_history.JxW(cell);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -348,7 +348,7 @@ namespace VPContact
     scratch.cell_vector.reinit(fe.n_dofs_per_cell());
     if (predictor_stored)
       {
-        subtract_stored_predictor_work(cell, scratch);
+        subtract_predictor_work(cell, scratch);
         return;
       }
     if (evaluate_rate || with_damage)
@@ -366,7 +366,6 @@ namespace VPContact
         scratch.damage_source_thread = std::this_thread::get_id();
       }
     const auto history = stress_history.get_data(cell);
-    const auto JxW     = std::as_const(stress_history).JxW(cell);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
         auto &point     = history[q];
@@ -383,12 +382,8 @@ namespace VPContact
                                            scratch.damage_values[q],
                                            cell_kinematics.point(cell, q),
                                            previous_time);
-        scratch.weighted_predictor[q] = point.predictor * JxW[q];
       }
-    cell_kinematics.subtract_stress_work(cell,
-                                         make_array_view(std::as_const(
-                                           scratch.weighted_predictor)),
-                                         scratch.cell_vector);
+    subtract_predictor_work(cell, scratch);
   }
 
 

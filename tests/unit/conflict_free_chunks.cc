@@ -28,6 +28,8 @@
 #include <set>
 #include <string>
 
+#include "corner_refined_mesh.h"
+
 using namespace VPContact;
 
 namespace
@@ -92,16 +94,7 @@ main(int argc, char **argv)
   const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
   parallel::distributed::Triangulation<2> triangulation(comm);
-  GridGenerator::hyper_cube(triangulation);
-  triangulation.refine_global(4);
-  for (unsigned int level = 0; level < 2; ++level)
-    {
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned() && cell->center()[0] > 0.5
-            && cell->center()[1] > 0.5 && cell->center().norm() < 0.9)
-          cell->set_refine_flag();
-      triangulation.execute_coarsening_and_refinement();
-    }
+  make_corner_refined_mesh(triangulation, 4);
   const FESystem<2> fe(FE_Q<2>(1), 2);
   DoFHandler<2>     dof_handler(triangulation);
   dof_handler.distribute_dofs(fe);

@@ -303,7 +303,7 @@ namespace VPContact
                     const bool          body_force,
                     const double *const solution_entries);
     void
-    subtract_stored_predictor_work(
+    subtract_predictor_work(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       AssemblyScratch                                      &scratch) const;
     void
