@@ -8,6 +8,9 @@
 #include <deal.II/fe/mapping.h>
 
 #include <array>
+#include <cstring>
+#include <string_view>
+#include <unordered_map>
 
 namespace VPContact
 {
@@ -64,6 +67,51 @@ namespace VPContact
                              "ghosted layout."));
       return position;
     }
+
+    // The shape gradients of a cell depend only on its shape: the cells
+    // that are translates of one another (every cell of a box, the cells of
+    // one size of a refined box) have the same gradients to the bit, since
+    // FEValues reuses the last cell's values for a translate. Each distinct
+    // block of gradients is stored once, and a cell keeps the index of its
+    // own: in 3D this saves 1.5 kB a cell on such meshes (400 MB at 64^3
+    // cells), and the passes over the cells read one block from the cache
+    // instead of a block per cell from memory. Blocks are found by a hash of
+    // their bytes and compared in full, so a cell never takes another
+    // cell's gradients unless they are the same bits.
+    template <int dim>
+    class GradientBlocks
+    {
+    public:
+      GradientBlocks(const unsigned int           block_size,
+                     std::vector<Tensor<1, dim>> &storage)
+        : block_size(block_size)
+        , storage(storage)
+      {}
+
+      unsigned int
+      index_of(const std::vector<Tensor<1, dim>> &block)
+      {
+        const std::string_view bytes(reinterpret_cast<const char *>(
+                                       block.data()),
+                                     block.size() * sizeof(Tensor<1, dim>));
+        auto &candidates = by_hash[std::hash<std::string_view>()(bytes)];
+        for (const unsigned int index : candidates)
+          if (std::memcmp(&storage[index * block_size],
+                          block.data(),
+                          bytes.size())
+              == 0)
+            return index;
+        const unsigned int index = storage.size() / block_size;
+        storage.insert(storage.end(), block.begin(), block.end());
+        candidates.push_back(index);
+        return index;
+      }
+
+    private:
+      const unsigned int                                         block_size;
+      std::vector<Tensor<1, dim>>                               &storage;
+      std::unordered_map<std::size_t, std::vector<unsigned int>> by_hash;
+    };
   } // namespace
 
 
@@ -91,7 +139,8 @@ namespace VPContact
 
     const unsigned int n_cells
       = dof_handler.get_triangulation().n_active_cells();
-    gradients.assign(n_cells * n_q_points * n_nodes, Tensor<1, dim>());
+    gradients.clear();
+    gradient_block.assign(n_cells, 0);
     points.assign(n_cells * n_q_points, Point<dim>());
     positions.assign(n_cells * dofs_per_cell, 0);
     layout = std::make_unique<Epetra_BlockMap>(ghosted.trilinos_vector().Map());
@@ -105,6 +154,8 @@ namespace VPContact
                             quadrature,
                             update_gradients | update_quadrature_points);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    GradientBlocks              blocks(n_q_points * n_nodes, gradients);
+    std::vector<Tensor<1, dim>> block(n_q_points * n_nodes);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -114,9 +165,9 @@ namespace VPContact
             {
               points[c * n_q_points + q] = fe_values.quadrature_point(q);
               for (unsigned int a = 0; a < n_nodes; ++a)
-                gradients[(c * n_q_points + q) * n_nodes + a]
-                  = fe_values.shape_grad(a, q);
+                block[q * n_nodes + a] = fe_values.shape_grad(a, q);
             }
+          gradient_block[c] = blocks.index_of(block);
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             positions[c * dofs_per_cell + i]
@@ -168,7 +219,7 @@ namespace VPContact
     const unsigned int *dofs = &positions[c * dofs_per_cell];
     for (unsigned int q = 0; q < n_q_points; ++q)
       {
-        const Tensor<1, dim> *grad = &gradients[(c * n_q_points + q) * n_nodes];
+        const Tensor<1, dim> *grad = cell_gradients(c) + q * n_nodes;
         // The displacement gradient sum_a u_a (x) grad N_a, then its
         // symmetric part.
         Tensor<2, dim> du;
@@ -216,7 +267,7 @@ namespace VPContact
     const unsigned int *dofs = &positions[c * dofs_per_cell];
     for (unsigned int q = 0; q < n_q_points; ++q)
       {
-        const Tensor<1, dim> *grad = &gradients[(c * n_q_points + q) * n_nodes];
+        const Tensor<1, dim> *grad = cell_gradients(c) + q * n_nodes;
         Tensor<1, dim>        value;
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           if (component_of[i] == dim)
@@ -260,7 +311,7 @@ namespace VPContact
     std::array<Tensor<1, dim>, max_nodes> traction;
     for (unsigned int q = 0; q < n_q_points; ++q)
       {
-        const Tensor<1, dim> *grad = &gradients[(c * n_q_points + q) * n_nodes];
+        const Tensor<1, dim> *grad = cell_gradients(c) + q * n_nodes;
         for (unsigned int a = 0; a < n_nodes; ++a)
           traction[a] = weighted_stress[q] * grad[a];
         for (unsigned int i = 0; i < dofs_per_cell; ++i)

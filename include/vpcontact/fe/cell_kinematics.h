@@ -39,8 +39,8 @@ namespace VPContact
    * the shape data of the FESystem, and reads the cell's values through a
    * global-to-local index lookup per entry. What the visit needs is the
    * same in every step while the mesh is fixed, so it is computed once per
-   * mesh here (in 2D with 4 points, 46 doubles' worth per cell, a small
-   * part of a run's memory).
+   * mesh here: the points and the entries' positions per cell, the
+   * gradients once per shape of cell (one block for all cells of a box).
    *
    * The strain of a vector u at point q is
    * eps(u)(x_q) = sym(sum_a u_a (x) grad N_a(x_q)), with u_a the
@@ -146,7 +146,7 @@ namespace VPContact
     const Tensor<1, dim> *
     shape_gradients(const cell_iterator &cell) const
     {
-      return &gradients[cell->active_cell_index() * n_q_points * n_nodes];
+      return cell_gradients(cell->active_cell_index());
     }
 
     /// Quadrature point @p q of @p cell in real space.
@@ -178,12 +178,24 @@ namespace VPContact
     /// every cell: N_a(x_q) at q * n_nodes + a.
     std::vector<double> shape_values;
 
-    /// Per cell (at active_cell_index times the size of one cell's data):
-    /// grad N_a(x_q) at q * n_nodes + a, the points x_q, and the positions
-    /// of the cell's entries in the ghosted layout.
+    /// The distinct blocks of shape gradients, grad N_a(x_q) at
+    /// q * n_nodes + a in each, and for each cell (by active_cell_index) the
+    /// index of its block: cells of the same shape share one (see
+    /// GradientBlocks in cell_kinematics.cc).
     std::vector<Tensor<1, dim>> gradients;
-    std::vector<Point<dim>>     points;
-    std::vector<unsigned int>   positions;
+    std::vector<unsigned int>   gradient_block;
+    /// Per cell (at active_cell_index times the size of one cell's data):
+    /// the points x_q, and the positions of the cell's entries in the
+    /// ghosted layout.
+    std::vector<Point<dim>>   points;
+    std::vector<unsigned int> positions;
+
+    /// The gradients of cell @p c (its active_cell_index).
+    const Tensor<1, dim> *
+    cell_gradients(const unsigned int c) const
+    {
+      return &gradients[std::size_t(gradient_block[c]) * n_q_points * n_nodes];
+    }
 
     /// The layout the positions refer to, and copies of the layouts of the
     /// vectors found equal to it (see local_entries()).
