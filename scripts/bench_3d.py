@@ -8,6 +8,11 @@ doc/performance.md.
 
 Usage: bench_3d.py VPCONTACT [--cells N] [--steps S] [--ranks R ...]
                              [--scenes paper slip] [--timeout T]
+                             [--against COMMIT=VPCONTACT ...]
+--against runs the same scenes with the executable of an earlier commit
+right after each of this one's, so that time and memory compare side by
+side on one machine in one sitting (the column *commit* tells them apart).
+The rows of scenes not run this time stay in the CSV as they were.
 A benchmark reports figures: nothing here passes or fails."""
 import argparse
 import datetime
@@ -33,9 +38,9 @@ COLUMNS = ["scene", "cells_per_side", "ranks", "steps", "status", "dofs", "total
            "phases", "date", "cpu", "commit"]
 
 
-def run(a, scene, ranks):
+def run(a, scene, ranks, executable, label=""):
     cells = a.cells or SCENES[scene][1]
-    tag = f"{scene}3d_{cells}_{ranks}"
+    tag = f"{scene}3d_{cells}_{ranks}{label}"
     folder = os.path.join(a.workdir, "runs", tag)
     shutil.rmtree(folder, ignore_errors=True)
     os.makedirs(os.path.join(a.workdir, "logs"), exist_ok=True)
@@ -49,7 +54,7 @@ def run(a, scene, ranks):
                 f"subsection Error estimate\n  set Estimate error = false\n"
                 f"end\nsubsection Output\n  set Directory = {folder}\n"
                 f"  set Output every = 0\nend\n")
-    out, row = bench.launch(a, [a.executable, prm], ranks, tag,
+    out, row = bench.launch(a, [executable, prm], ranks, tag,
                             lambda out: "Total wallclock" in out,
                             timeout=a.timeout)
     row.update(scene=scene, cells_per_side=cells, ranks=ranks,
@@ -124,17 +129,27 @@ def main():
     p.add_argument("--workdir", default="/tmp/vpcontact_bench_3d")
     p.add_argument("--csv", default=os.path.join(ROOT, "doc", "figures",
                                                  "bench_3d.csv"))
+    p.add_argument("--against", nargs="+", default=[], metavar="COMMIT=EXE",
+                   help="also run each scene with EXE, built from COMMIT")
     a = p.parse_args()
     machine = bench.machine()
+    against = [tuple(x.split("=", 1)) for x in a.against]
     rows = []
     for scene, ranks in [(s, r) for s in a.scenes for r in a.ranks]:
-        row = run(a, scene, ranks)
-        row.update(date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
-                   cpu=machine.get("cpu", ""), commit=machine.get("commit", ""))
-        print({k: row.get(k) for k in ("scene", "ranks", "status", "dofs", "total_s",
-                                       "per_step_ms")}, flush=True)
-        rows.append(row)
+        runs = [(machine.get("commit", ""), a.executable, "")] + [
+            (commit, exe, "_" + commit) for commit, exe in against]
+        for commit, executable, label in runs:
+            row = run(a, scene, ranks, executable, label)
+            row.update(date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"),
+                       cpu=machine.get("cpu", ""), commit=commit)
+            print({k: row.get(k) for k in ("scene", "ranks", "commit", "status",
+                                           "dofs", "total_s", "per_step_ms")},
+                  flush=True)
+            rows.append(row)
     import csv
+    if os.path.exists(a.csv):
+        with open(a.csv) as f:
+            rows += [r for r in csv.DictReader(f) if r["scene"] not in a.scenes]
     with open(a.csv, "w", newline="") as f:
         w = csv.DictWriter(f, COLUMNS, extrasaction="ignore")
         w.writeheader()

@@ -134,7 +134,8 @@ def goals(best, sizes, algebras, every=None):
          "The peak comes while ML builds its hierarchy, whose products "
          "R A P take the largest part of the heap then (valgrind's "
          "massif). Besides, the fields at the quadrature points, the "
-         "shape gradients kept per cell and the estimate's buffers stay "
+         "points and entry positions kept per cell (the shape gradients "
+         "once per shape of cell) and the estimate's buffers stay "
          "for the whole run; with PETSc a copy of the matrix in PETSc's "
          "format comes on top. The peer holds one PETSc matrix and "
          "GAMG's hierarchy."),

@@ -333,6 +333,12 @@ def scene_3d(csv_path):
         return []
     m = rows[0]
     stopped = [r for r in rows if r["status"] != "ok"]
+    commits = sorted({r["commit"] for r in rows} - {m["commit"]})
+    side_by_side = (
+        f" Rows of commit {', '.join(commits)} ran the executable of that "
+        "earlier commit right after this one's (`--against`), for "
+        "comparison on the same machine in the same sitting." if commits
+        else "")
     lines = [
         "", "## The 3D scenes", "",
         "`prm/paper_fig1_3d.prm` (*paper*: the unit cube, Tresca friction "
@@ -345,21 +351,36 @@ def scene_3d(csv_path):
         f"{m['commit']} on {m['date']} ({m['cpu']}). Time per step in ms, "
         "split as above; *AS its*: friction active-set iterations per "
         "step (one where a node changes set reassembles the matrix and "
-        "rebuilds AMG).", "",
-        "| scene | N | ranks | dofs | total [s] | per step [ms] | " +
+        "rebuilds AMG)." + side_by_side, "",
+        "| scene | commit | N | ranks | dofs | total [s] | per step [ms] | " +
         " | ".join(t for _, t in PHASE_TITLES) +
         " | CG its per step | AS its per step | memory rank 0 [MB] | "
         "memory all ranks [MB] |",
-        "|" + "---|" * (10 + len(PHASE_TITLES))]
+        "|" + "---|" * (11 + len(PHASE_TITLES))]
     for r in rows:
         lines.append(
             f"| {r.get('scene') or 'paper'}"
-            f"{' (stopped)' if r in stopped else ''} | {r['cells_per_side']} | "
+            f"{' (stopped)' if r in stopped else ''} | {r['commit']} | "
+            f"{r['cells_per_side']} | "
             f"{r['ranks']} | {r['dofs']} | "
             f"{fmt(r['total_s'])} | {fmt(r['per_step_ms'])} | " +
             " | ".join(fmt(r.get(p + "_ms")) for p, _ in PHASE_TITLES) +
             f" | {fmt(r['linear_its'])} | {fmt(r['active_set_its'])} | "
             f"{fmt(r['mem_rank0_mb'])} | {fmt(r['mem_all_mb'])} |")
+    for r in rows:
+        if r["commit"] == m["commit"] or r["status"] != "ok":
+            continue
+        head = next((h for h in rows if h["commit"] == m["commit"]
+                     and h["status"] == "ok" and h["scene"] == r["scene"]
+                     and h["ranks"] == r["ranks"]), None)
+        if head:
+            lines += ["", f"*{r['scene']}, {r['ranks']} ranks, "
+                      f"{m['commit']} against {r['commit']}*: time per step "
+                      f"{fmt(head['per_step_ms'])} / {fmt(r['per_step_ms'])} "
+                      f"ms = {float(head['per_step_ms']) / float(r['per_step_ms']):.3g}, "
+                      f"peak memory over the ranks {fmt(head['mem_all_mb'])} / "
+                      f"{fmt(r['mem_all_mb'])} MB = "
+                      f"{float(head['mem_all_mb']) / float(r['mem_all_mb']):.3g}."]
     for r in stopped:
         lines += ["", f"*{r.get('scene')} (stopped)*: {r['status']}; its "
                   "time per step is the mean wall time of the steps it "
