@@ -5,8 +5,8 @@
 #define vpcontact_tests_checkpoint_runner_h
 
 #include <vpcontact/checkpoint/checkpoint_fields.h>
-#include <vpcontact/problem_data/geometry.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/problem_data/geometry.h>
 #include <vpcontact/simulator/simulator.h>
 
 #include <deal.II/fe/fe_q.h>

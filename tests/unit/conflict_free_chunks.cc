@@ -93,14 +93,11 @@ main(int argc, char **argv)
   const MPI_Comm                   comm = MPI_COMM_WORLD;
   const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
-  parallel::distributed::Triangulation<2> triangulation(comm);
-  make_corner_refined_mesh(triangulation, 4);
-  const FESystem<2> fe(FE_Q<2>(1), 2);
-  DoFHandler<2>     dof_handler(triangulation);
-  dof_handler.distribute_dofs(fe);
-  const IndexSet owned = dof_handler.locally_owned_dofs();
-  IndexSet       relevant;
-  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+  CornerRefinedMesh         mesh(comm, 4);
+  const auto               &fe          = mesh.fe;
+  const auto               &dof_handler = mesh.dof_handler;
+  const IndexSet           &owned       = mesh.owned;
+  const IndexSet           &relevant    = mesh.relevant;
   AffineConstraints<double> constraints(relevant);
   DoFTools::make_hanging_node_constraints(dof_handler, constraints);
   VectorTools::interpolate_boundary_values(dof_handler,

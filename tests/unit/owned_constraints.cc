@@ -50,15 +50,10 @@ main(int argc, char **argv)
   const MPI_Comm                   comm = MPI_COMM_WORLD;
   const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
-  parallel::distributed::Triangulation<2> triangulation(comm);
-  make_corner_refined_mesh(triangulation, 3);
-
-  const FESystem<2> fe(FE_Q<2>(1), 2);
-  DoFHandler<2>     dof_handler(triangulation);
-  dof_handler.distribute_dofs(fe);
-  const IndexSet owned = dof_handler.locally_owned_dofs();
-  IndexSet       relevant;
-  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+  CornerRefinedMesh mesh(comm, 3);
+  const auto       &dof_handler = mesh.dof_handler;
+  const IndexSet   &owned       = mesh.owned;
+  const IndexSet   &relevant    = mesh.relevant;
 
   const auto build = [&](const bool with_hanging_nodes) {
     AffineConstraints<double> constraints(relevant);
