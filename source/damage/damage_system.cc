@@ -17,26 +17,6 @@
 
 namespace VPContact
 {
-  namespace
-  {
-    // The IndexSet of size @p size holding @p indices (in any order, with
-    // repetitions), built in O(n log n): IndexSet::add_index() inserts an
-    // index below the last one added in time linear in the set's ranges.
-    IndexSet
-    sorted_index_set(const types::global_dof_index         size,
-                     std::vector<types::global_dof_index> &indices)
-    {
-      std::sort(indices.begin(), indices.end());
-      indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
-      IndexSet set(size);
-      set.add_indices(indices.begin(), indices.end());
-      set.compress();
-      return set;
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
   DamageSystem<dim>::declare_parameters(ParameterHandler &prm)
@@ -129,11 +109,8 @@ namespace VPContact
       if (fe.system_to_component_index(i).first == component)
         damage_shape_functions.push_back(i);
 
-    const LA::MPI::Vector index = number_dofs(dof_handler,
-                                              locally_owned_dofs,
-                                              locally_relevant_dofs,
-                                              communicator);
-    make_hanging_node_constraints(dof_handler, locally_relevant_dofs, index);
+    take_block(dof_handler, locally_owned_dofs, locally_relevant_dofs);
+    make_hanging_node_constraints(dof_handler, locally_relevant_dofs);
     has_hanging_nodes = (Utilities::MPI::max(static_cast<unsigned int>(
                                                constraints.n_constraints()),
                                              communicator)
@@ -157,58 +134,28 @@ namespace VPContact
 
 
   template <int dim>
-  LA::MPI::Vector
-  DamageSystem<dim>::number_dofs(const DoFHandler<dim> &dof_handler,
-                                 const IndexSet        &locally_owned_dofs,
-                                 const IndexSet        &locally_relevant_dofs,
-                                 const MPI_Comm         communicator)
+  void
+  DamageSystem<dim>::take_block(const DoFHandler<dim> &dof_handler,
+                                const IndexSet        &locally_owned_dofs,
+                                const IndexSet        &locally_relevant_dofs)
   {
-    // The damage dofs this rank sees, and the owned ones in the order of
-    // the FESystem: they get the compact indices first, first + 1, ...
-    // The cells of a mesh file come in any order, and an IndexSet takes
-    // indices one at a time in linear time each unless they come sorted:
-    // they are collected, sorted and added at once.
+    // The FESystem is numbered by blocks (Simulator::number_dofs()): the
+    // damage is the block [first, n), and a block index is the degree of
+    // freedom's index less first. Each rank's owned damage entries are a
+    // contiguous range, which follows its owned displacement entries in
+    // the local storage of a vector on all of them.
+    const types::global_dof_index n     = dof_handler.n_dofs();
+    const types::global_dof_index first = n - count_damage_dofs(dof_handler);
+    block_start                         = first;
+    compact_owned                       = locally_owned_dofs.get_view(first, n);
+    compact_relevant = locally_relevant_dofs.get_view(first, n);
+    damage_dofs      = IndexSet(n);
+    damage_dofs.add_range(first, n);
+    damage_dofs  = damage_dofs & locally_relevant_dofs;
+    owned_offset = locally_owned_dofs.n_elements() - compact_owned.n_elements();
+
     std::vector<types::global_dof_index> dofs(
       dof_handler.get_fe().n_dofs_per_cell());
-    std::vector<types::global_dof_index> seen;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          cell->get_dof_indices(dofs);
-          for (const unsigned int i : damage_shape_functions)
-            seen.push_back(dofs[i]);
-        }
-    damage_dofs = sorted_index_set(dof_handler.n_dofs(), seen);
-    const IndexSet owned_damage_dofs = damage_dofs & locally_owned_dofs;
-    compact_owned = Utilities::MPI::create_ascending_partitioning(
-      communicator,
-      owned_damage_dofs
-        .n_elements())[Utilities::MPI::this_mpi_process(communicator)];
-
-    // The compact index of every relevant damage dof, through a ghosted
-    // FESystem vector that holds it (exact in a double up to 2^53).
-    LA::MPI::Vector index_owned(locally_owned_dofs, communicator);
-    full_position.clear();
-    // A rank may own no cell (and no damage node) at all.
-    types::global_dof_index next
-      = (compact_owned.n_elements() > 0 ? compact_owned.nth_index_in_set(0) :
-                                          0);
-    for (const auto dof : owned_damage_dofs)
-      {
-        index_owned(dof) = static_cast<double>(next++);
-        full_position.push_back(locally_owned_dofs.index_within_set(dof));
-      }
-    index_owned.compress(VectorOperation::insert);
-    LA::MPI::Vector index(locally_owned_dofs,
-                          locally_relevant_dofs,
-                          communicator);
-    index = index_owned;
-
-    seen.clear();
-    for (const auto dof : damage_dofs)
-      seen.push_back(to_compact(index, dof));
-    compact_relevant = sorted_index_set(compact_owned.size(), seen);
-
     const unsigned int n_shape = damage_shape_functions.size();
     cell_dofs.assign(dof_handler.get_triangulation().n_active_cells() * n_shape,
                      numbers::invalid_dof_index);
@@ -217,20 +164,30 @@ namespace VPContact
         {
           cell->get_dof_indices(dofs);
           for (unsigned int j = 0; j < n_shape; ++j)
-            cell_dofs[cell->active_cell_index() * n_shape + j]
-              = to_compact(index, dofs[damage_shape_functions[j]]);
+            {
+              const auto dof = dofs[damage_shape_functions[j]];
+              Assert(dof >= first,
+                     ExcMessage("The damage degrees of freedom must be the "
+                                "last block (DoFRenumbering::component_wise "
+                                "with the damage in block 1)."));
+              cell_dofs[cell->active_cell_index() * n_shape + j] = dof - first;
+            }
         }
-    return index;
   }
 
 
 
   template <int dim>
   types::global_dof_index
-  DamageSystem<dim>::to_compact(const LA::MPI::Vector        &index,
-                                const types::global_dof_index dof)
+  DamageSystem<dim>::count_damage_dofs(const DoFHandler<dim> &dof_handler) const
   {
-    return static_cast<types::global_dof_index>(std::llround(index(dof)));
+    // The damage element is the last base element of the FESystem, one
+    // scalar component: its share of the degrees of freedom.
+    std::vector<unsigned int> block_component(
+      dof_handler.get_fe().n_components(),
+      0);
+    block_component.back() = 1;
+    return DoFTools::count_dofs_per_fe_block(dof_handler, block_component)[1];
   }
 
 
@@ -239,12 +196,11 @@ namespace VPContact
   void
   DamageSystem<dim>::make_hanging_node_constraints(
     const DoFHandler<dim> &dof_handler,
-    const IndexSet        &locally_relevant_dofs,
-    const LA::MPI::Vector &index)
+    const IndexSet        &locally_relevant_dofs)
   {
-    // The hanging node constraints of the FESystem, translated. A hanging
-    // damage node depends on damage nodes of a cell this rank sees, so its
-    // parents are relevant here too.
+    // The hanging node constraints of the FESystem, on the damage block. A
+    // hanging damage node depends on damage nodes of a cell this rank sees,
+    // so its parents are relevant here too.
     AffineConstraints<double> full_constraints(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, full_constraints);
     full_constraints.close();
@@ -253,14 +209,13 @@ namespace VPContact
     for (const auto dof : damage_dofs)
       if (full_constraints.is_constrained(dof))
         {
-          const auto line = to_compact(index, dof);
+          const auto line = dof - block_start;
           constraints.add_line(line);
           for (const auto &[parent, weight] :
                *full_constraints.get_constraint_entries(dof))
             {
-              AssertThrow(locally_relevant_dofs.is_element(parent),
-                          ExcInternalError());
-              constraints.add_entry(line, to_compact(index, parent), weight);
+              AssertThrow(parent >= block_start, ExcInternalError());
+              constraints.add_entry(line, parent - block_start, weight);
             }
         }
     constraints.close();
@@ -366,12 +321,11 @@ namespace VPContact
   DamageSystem<dim>::gather(const LA::MPI::Vector &full,
                             LA::MPI::Vector       &compact) const
   {
-    // The local entries of owned vectors, in the order of their index sets
-    // (contiguous ranges here): no index lookup per entry.
-    const double *source      = full.begin();
-    double       *destination = compact.begin();
-    for (unsigned int i = 0; i < full_position.size(); ++i)
-      destination[i] = source[full_position[i]];
+    // The local entries of owned vectors, in the order of their index sets:
+    // the damage block's follow the displacement block's (see take_block()).
+    std::copy_n(full.begin() + owned_offset,
+                compact.locally_owned_size(),
+                compact.begin());
   }
 
 
@@ -381,10 +335,9 @@ namespace VPContact
   DamageSystem<dim>::scatter(const LA::MPI::Vector &compact,
                              LA::MPI::Vector       &full) const
   {
-    const double *source      = compact.begin();
-    double       *destination = full.begin();
-    for (unsigned int i = 0; i < full_position.size(); ++i)
-      destination[full_position[i]] = source[i];
+    std::copy_n(compact.begin(),
+                compact.locally_owned_size(),
+                full.begin() + owned_offset);
   }
 
 

@@ -1,5 +1,5 @@
-// The linear algebra of the damage obstacle problem on the damage degrees of
-// freedom alone: their compact numbering inside the FESystem, the matrix
+// The linear algebra of the damage obstacle problem on the damage block of
+// the FESystem's degrees of freedom: the block's index sets, the matrix
 // M_L/k + kappa A with its preconditioner, and the CG solve with nodes held
 // at bounds.
 #ifndef vpcontact_damage_system_h
@@ -29,19 +29,19 @@ namespace VPContact
   using namespace dealii;
 
   /**
-   * The damage zeta is the last component of the simulator's FESystem, so
-   * its degrees of freedom are a third (2D) or a quarter (3D) of all of
-   * them, interleaved with the displacement. Solving the damage problem in
-   * the numbering of the FESystem would drag the displacement rows through
-   * every matrix-vector product and every AMG level as held (identity)
-   * rows. This class numbers the damage degrees of freedom contiguously
-   * instead (rank by rank, in the order of the FESystem's numbering) and
-   * keeps the damage problem there: a scalar matrix, its preconditioner, and
-   * vectors a third of the size. gather() and scatter() move the damage
-   * entries between the two numberings; the solution itself stays in the
-   * FESystem.
+   * The damage zeta is the last component of the simulator's FESystem,
+   * whose degrees of freedom are numbered by blocks (as in step-32 and
+   * step-55): the damage is the block [n_u, n), a third (2D) or a quarter
+   * (3D) of all of them. The damage problem works on that block alone, in
+   * its own index range [0, n - n_u) (the index of a degree of freedom
+   * less n_u, which get_view() gives): a scalar matrix, its
+   * preconditioner, and vectors of the block's size, so that no
+   * displacement row is dragged through its products and AMG levels.
+   * gather() and scatter() copy the block's owned entries out of and into
+   * a vector on all degrees of freedom, where they follow the displacement
+   * block's; the solution itself stays in the FESystem.
    *
-   * "Compact" below means an index or vector of this numbering.
+   * "Compact" below means an index or vector of the damage block.
    *
    * The preconditioner of the CG solves is the entry "Damage
    * preconditioner" of section "Solver" (declared here, since this class
@@ -60,10 +60,10 @@ namespace VPContact
     parse_parameters(ParameterHandler &prm, const LinearAlgebra linear_algebra);
 
     /**
-     * Number the damage degrees of freedom (component @p component of the
-     * FESystem of @p dof_handler) and build the hanging node constraints
-     * and the sparsity pattern of the compact system. Releases the
-     * preconditioner of an earlier mesh first.
+     * Take the damage block (component @p component of the FESystem of
+     * @p dof_handler, its last, numbered by blocks) and build its hanging
+     * node constraints and the sparsity pattern of the compact system. Releases
+     * the preconditioner of an earlier mesh first.
      */
     void
     reinit(const DoFHandler<dim> &dof_handler,
@@ -180,30 +180,28 @@ namespace VPContact
 
 
   private:
-    /// Sets the index sets, full_position and cell_dofs; returns a ghosted
-    /// FESystem vector holding the compact index of every relevant damage
-    /// dof.
-    LA::MPI::Vector
-    number_dofs(const DoFHandler<dim> &dof_handler,
-                const IndexSet        &locally_owned_dofs,
-                const IndexSet        &locally_relevant_dofs,
-                const MPI_Comm         communicator);
+    /// The damage block of the FESystem's numbering: the index sets,
+    /// block_start, owned_offset and cell_dofs.
+    void
+    take_block(const DoFHandler<dim> &dof_handler,
+               const IndexSet        &locally_owned_dofs,
+               const IndexSet        &locally_relevant_dofs);
 
-
-    static types::global_dof_index
-    to_compact(const LA::MPI::Vector &index, const types::global_dof_index dof);
+    types::global_dof_index
+    count_damage_dofs(const DoFHandler<dim> &dof_handler) const;
 
     void
     make_hanging_node_constraints(const DoFHandler<dim> &dof_handler,
-                                  const IndexSet        &locally_relevant_dofs,
-                                  const LA::MPI::Vector &index);
+                                  const IndexSet        &locally_relevant_dofs);
 
     IndexSet compact_owned;
     IndexSet compact_relevant;
     IndexSet damage_dofs;
-    /// For each owned compact index (by local position): the local position
-    /// of the same degree of freedom in an owned FESystem vector.
-    std::vector<unsigned int> full_position;
+    /// The first damage degree of freedom of the FESystem (the block's
+    /// offset), and the position of this rank's first owned one in the
+    /// local entries of an owned FESystem vector.
+    types::global_dof_index   block_start  = 0;
+    std::size_t               owned_offset = 0;
     std::vector<unsigned int> damage_shape_functions;
     /// The compact indices of each locally owned cell, by active cell index.
     std::vector<types::global_dof_index> cell_dofs;
