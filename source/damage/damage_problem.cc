@@ -140,7 +140,7 @@ namespace VPContact
                             const Quadrature<dim> &quadrature_in,
                             const IndexSet        &locally_owned_dofs,
                             const IndexSet        &locally_relevant_dofs,
-                            LA::MPI::Vector       &solution_owned)
+                            LA::MPI::BlockVector  &solution_owned)
   {
     TimerOutput::Scope t(timer, "Setup");
     dof_handler = &dof_handler_in;
@@ -285,7 +285,7 @@ namespace VPContact
   template <int dim>
   void
   DamageProblem<dim>::interpolate_initial_damage(
-    LA::MPI::Vector &solution_owned)
+    LA::MPI::BlockVector &solution_owned)
   {
     // zeta_0, checked against the bounds at every node.
     const unsigned int n_components = dof_handler->get_fe().n_components();
@@ -309,7 +309,7 @@ namespace VPContact
                             "[" + to_text(lowest) + ", " + to_text(highest)
                               + "] (range at the nodes)",
                             "the damage must lie in [0, 1] (1 is sound).");
-    system.scatter(damage_owned, solution_owned);
+    copy_owned_values(damage_owned, solution_owned.block(1));
     damage_exchange.copy(damage_owned, damage);
   }
 

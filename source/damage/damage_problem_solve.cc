@@ -16,9 +16,9 @@ namespace VPContact
 {
   template <int dim>
   void
-  DamageProblem<dim>::solve(const unsigned int        n,
-                            const LA::MPI::Vector    &solution_owned,
-                            const StressHistory<dim> &history)
+  DamageProblem<dim>::solve(const unsigned int          n,
+                            const LA::MPI::BlockVector &solution_owned,
+                            const StressHistory<dim>   &history)
   {
     // zeta_{n-1} from the solution and the load b of this step. A source
     // that evaluates to NaN or infinity anywhere spoils the whole load; say
@@ -27,7 +27,7 @@ namespace VPContact
     // update, which still reads zeta_{n-1}.
     last_iterations = 0;
     change          = 0.;
-    system.gather(solution_owned, old_damage);
+    copy_owned_values(solution_owned.block(1), old_damage);
     damage_exchange.copy(old_damage, damage);
     assemble_load(history);
     model.check_source_finite(all_finite(load, communicator), n, time.time(n));
@@ -199,8 +199,8 @@ namespace VPContact
 
   template <int dim>
   void
-  DamageProblem<dim>::store(const unsigned int n,
-                            LA::MPI::Vector   &solution_owned)
+  DamageProblem<dim>::store(const unsigned int    n,
+                            LA::MPI::BlockVector &solution_owned)
   {
     // Nodes between the bounds satisfy them up to the solver tolerance;
     // clip them onto [0, 1] (the exact discrete solution lies there) and
@@ -226,7 +226,7 @@ namespace VPContact
     system.distribute_hanging_nodes(damage_owned);
     last_clip = clip;
     damage_exchange.copy(damage_owned, damage);
-    system.scatter(damage_owned, solution_owned);
+    copy_owned_values(damage_owned, solution_owned.block(1));
   }
 
 

@@ -3,9 +3,11 @@
 #include <vpcontact/linear_algebra/ghost_exchange.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/lac/exceptions.h>
 
 #include <algorithm>
+#include <vector>
 
 namespace VPContact
 {
@@ -16,6 +18,25 @@ namespace VPContact
                 ExcMessage("copy_owned_values() needs two vectors with the "
                            "same owned entries."));
     std::copy(from.begin(), from.end(), to.begin());
+  }
+
+
+
+  void
+  copy_into_blocks(const LA::MPI::Vector &full, LA::MPI::BlockVector &blocks)
+  {
+    AssertThrow(full.locally_owned_size() == blocks.locally_owned_size()
+                  && !full.has_ghost_elements(),
+                ExcMessage("copy_into_blocks() needs an owned vector with "
+                           "the owned entries of the blocks."));
+    const double *entry = full.begin();
+    for (unsigned int b = 0; b < blocks.n_blocks(); ++b)
+      {
+        std::copy_n(entry,
+                    blocks.block(b).locally_owned_size(),
+                    blocks.block(b).begin());
+        entry += blocks.block(b).locally_owned_size();
+      }
   }
 
 
@@ -69,5 +90,85 @@ namespace VPContact
                                                        *pair.importer,
                                                        Insert);
     AssertThrow(error == 0, ExcTrilinosError(error));
+  }
+
+
+  void
+  GhostExchange::make_block_parts(const LA::MPI::BlockVector &owned,
+                                  const LA::MPI::Vector      &ghosted)
+  {
+    // The ghosted vector's global indices, in the order of its entries,
+    // split at the blocks' bounds; each part must be contiguous.
+    const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
+    block_parts.first_entry.assign(owned.n_blocks() + 1, 0);
+    block_parts.layouts.clear();
+    types::global_dof_index block_start = 0;
+    std::size_t             entry       = 0;
+    const std::size_t       n_entries   = map.NumMyElements();
+    for (unsigned int b = 0; b < owned.n_blocks(); ++b)
+      {
+        const types::global_dof_index block_end
+          = block_start + owned.block(b).size();
+        block_parts.first_entry[b] = entry;
+        std::vector<types::global_dof_index> indices;
+        for (; entry < n_entries
+               && static_cast<types::global_dof_index>(map.GID64(entry))
+                    < block_end;
+             ++entry)
+          {
+            const auto index
+              = static_cast<types::global_dof_index>(map.GID64(entry));
+            AssertThrow(index >= block_start
+                          && (indices.empty()
+                              || index - block_start > indices.back()),
+                        ExcMessage("GhostExchange::copy() needs the ghosted "
+                                   "vector's entries sorted by index."));
+            indices.push_back(index - block_start);
+          }
+        IndexSet part(owned.block(b).size());
+        part.add_indices(indices.begin(), indices.end());
+        part.compress();
+        // Overlapping: the layout lists the entries in the order of the
+        // set, the ghosted vector's order.
+        block_parts.layouts.push_back(std::make_unique<Epetra_Map>(
+          part.make_trilinos_map(owned.block(b).get_mpi_communicator(), true)));
+        block_start = block_end;
+      }
+    AssertThrow(entry == n_entries, ExcInternalError());
+    block_parts.first_entry.back() = entry;
+    block_parts.ghosted_layout     = std::make_unique<Epetra_BlockMap>(map);
+  }
+
+
+
+  void
+  GhostExchange::copy(const LA::MPI::BlockVector &owned,
+                      LA::MPI::Vector            &ghosted)
+  {
+    AssertDimension(owned.size(), ghosted.size());
+    const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
+    if (!block_parts.ghosted_layout
+        || block_parts.ghosted_layout->DataPtr() != map.DataPtr())
+      make_block_parts(owned, ghosted);
+    // Each block into a view of its part of the ghosted entries: a copy
+    // where the layouts are the same (one rank), else an import kept as
+    // for two vectors.
+    for (unsigned int b = 0; b < owned.n_blocks(); ++b)
+      {
+        double *const part = ghosted.begin() + block_parts.first_entry[b];
+        const Epetra_BlockMap &layout = *block_parts.layouts[b];
+        const LayoutPair      &pair
+          = pair_for(owned.block(b).trilinos_vector().Map(), layout);
+        if (pair.same_layouts)
+          {
+            std::copy(owned.block(b).begin(), owned.block(b).end(), part);
+            continue;
+          }
+        Epetra_Vector view(View, layout, part);
+        const int     error = view.Import(owned.block(b).trilinos_vector(),
+                                      *pair.importer,
+                                      Insert);
+        AssertThrow(error == 0, ExcTrilinosError(error));
+      }
   }
 } // namespace VPContact

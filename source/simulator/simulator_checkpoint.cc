@@ -147,14 +147,22 @@ namespace VPContact
                          locally_relevant_dofs,
                          mpi_communicator);
     sets = sets_owned;
+    // The increments on all degrees of freedom, as the files hold them
+    // (the predictor's on the displacement block, the damage block zero).
     std::array<LA::MPI::Vector, 3> increments;
+    LA::MPI::BlockVector           recorded(increment_owned);
     for (unsigned int i = 0; i < increments.size(); ++i)
       {
         increments[i].reinit(locally_owned_dofs,
                              locally_relevant_dofs,
                              mpi_communicator);
-        increments[i]
-          = (i == 0 ? increment_owned : increment_predictor.recorded(i));
+        if (i > 0)
+          {
+            recorded = 0.;
+            copy_owned_values(increment_predictor.recorded(i),
+                              recorded.block(0));
+          }
+        ghosts.copy(i == 0 ? increment_owned : recorded, increments[i]);
       }
     const std::vector<const LA::MPI::Vector *> vectors
       = {&solution, &increments[0], &increments[1], &increments[2], &sets};
@@ -290,7 +298,8 @@ namespace VPContact
     make_constraints(time_discretization.time(checkpoint.step), &solution);
 
     restore_output_records(checkpoint);
-    increment_predictor.recorded(0) = increment_owned;
+    copy_owned_values(increment_owned.block(0),
+                      increment_predictor.recorded(0));
     increment_predictor.set_n_recorded(
       static_cast<unsigned int>(counter("recorded_increments")));
 
@@ -312,20 +321,30 @@ namespace VPContact
   void
   Simulator<dim>::read_checkpoint_fields(LA::MPI::Vector &sets_owned)
   {
+    // The files hold vectors on all degrees of freedom; the run keeps the
+    // solution and the increment in blocks, the predictor's increments on
+    // the displacement block.
+    std::array<LA::MPI::Vector, 4> full;
+    for (auto &v : full)
+      v.reinit(locally_owned_dofs, mpi_communicator);
     const std::vector<LA::MPI::Vector *> vectors
-      = {&solution_owned,
-         &increment_owned,
-         &increment_predictor.recorded(1),
-         &increment_predictor.recorded(2),
-         &sets_owned};
+      = {&full[0], &full[1], &full[2], &full[3], &sets_owned};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
     CheckpointFields::load(checkpointed_mesh(triangulation),
                            dof_handler,
                            vectors,
                            stress_history,
                            quadrature.size());
-    solution  = solution_owned;
-    increment = increment_owned;
+    copy_into_blocks(full[0], solution_owned);
+    copy_into_blocks(full[1], increment_owned);
+    LA::MPI::BlockVector recorded(increment_owned);
+    for (unsigned int i = 1; i < 3; ++i)
+      {
+        copy_into_blocks(full[i + 1], recorded);
+        copy_owned_values(recorded.block(0), increment_predictor.recorded(i));
+      }
+    ghosts.copy(solution_owned, solution);
+    ghosts.copy(increment_owned, increment);
   }
 
 

@@ -185,10 +185,10 @@ namespace VPContact
     constexpr double       newton_tolerance      = 1e-10;
     constexpr unsigned int max_newton_iterations = 50;
     increment_owned                              = 0.;
-    increment                                    = increment_owned;
-    last_linear_iterations                       = 0;
-    double first_residual                        = 0;
-    double last_update                           = 0;
+    ghosts.copy(increment_owned, increment);
+    last_linear_iterations = 0;
+    double first_residual  = 0;
+    double last_update     = 0;
     for (unsigned int iteration = 1;; ++iteration)
       {
         assemble_implicit_system(time);
@@ -239,27 +239,23 @@ namespace VPContact
                                           const unsigned int iteration)
   {
     initialize_linear_solver();
-    newton_update = 0.;
+    // The correction on the displacement block, with its constraints.
+    LA::MPI::Vector update(displacement.owned, mpi_communicator);
     {
       TimerOutput::Scope t(computing_timer, "Solve");
       last_linear_iterations
-        += displacement.solver.solve(newton_update, displacement.rhs);
+        += displacement.solver.solve(update, displacement.rhs);
     }
-    // The update on all degrees of freedom (the displacement ones lead
-    // the local entries), with its constraints.
-    LA::MPI::Vector update(increment_owned);
-    update = 0.;
-    std::copy(newton_update.begin(), newton_update.end(), update.begin());
     constraints.distribute(update);
     const double update_norm = update.l2_norm();
-    increment_owned += update;
+    increment_owned.block(0) += update;
     ghosts.copy(increment_owned, increment);
     if (iteration == 1 && boundary_conditions.has_prescribed_displacement())
       {
-        LA::MPI::Vector total(solution_owned);
+        LA::MPI::BlockVector total(solution_owned);
         total += increment_owned;
         LA::MPI::Vector total_relevant(solution);
-        total_relevant = total;
+        ghosts.copy(total, total_relevant);
         make_constraints(time, &total_relevant);
       }
     return update_norm;

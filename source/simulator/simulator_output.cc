@@ -167,39 +167,30 @@ namespace VPContact
 
 
 
-    // A ghosted copy of @p owned in the blocks of the numbering
-    // (displacement, damage), each with contiguous owned indices: what
-    // DataOut needs to build its own ghosted vector from it on several
-    // ranks.
-    template <int dim>
+    // A ghosted copy of @p owned, in the blocks of the numbering
+    // (displacement, damage) as the solution has them, each with
+    // contiguous owned indices: what DataOut needs to build its own ghosted
+    // vector from it on several ranks.
     LA::MPI::BlockVector
-    block_copy(const LA::MPI::Vector        &owned,
-               const IndexSet               &owned_dofs,
-               const IndexSet               &relevant_dofs,
-               const types::global_dof_index n_u,
-               const MPI_Comm                communicator)
+    ghosted_blocks(const LA::MPI::BlockVector &owned,
+                   const IndexSet             &relevant_dofs,
+                   const MPI_Comm              communicator)
     {
-      const types::global_dof_index n = owned_dofs.size();
-      std::vector<IndexSet>         owned_blocks{owned_dofs.get_view(0, n_u)};
-      std::vector<IndexSet> relevant_blocks{relevant_dofs.get_view(0, n_u)};
-      if (n > n_u)
+      std::vector<IndexSet>   owned_blocks, relevant_blocks;
+      types::global_dof_index start = 0;
+      for (unsigned int b = 0; b < owned.n_blocks(); ++b)
         {
-          owned_blocks.push_back(owned_dofs.get_view(n_u, n));
-          relevant_blocks.push_back(relevant_dofs.get_view(n_u, n));
-        }
-      LA::MPI::BlockVector blocks(owned_blocks, communicator);
-      const double        *entry = owned.begin();
-      for (unsigned int b = 0; b < blocks.n_blocks(); ++b)
-        {
-          std::copy_n(entry,
-                      blocks.block(b).locally_owned_size(),
-                      blocks.block(b).begin());
-          entry += blocks.block(b).locally_owned_size();
+          const auto end = start + owned.block(b).size();
+          owned_blocks.push_back(owned.block(b).locally_owned_elements());
+          relevant_blocks.push_back(relevant_dofs.get_view(start, end));
+          start = end;
         }
       LA::MPI::BlockVector ghosted(owned_blocks, relevant_blocks, communicator);
-      ghosted = blocks;
+      ghosted = owned;
       return ghosted;
     }
+
+
 
     std::string
     format(const char *pattern, const double value)
@@ -503,14 +494,8 @@ namespace VPContact
           DataComponentInterpretation::component_is_scalar);
       }
     data_out.attach_dof_handler(dof_handler);
-    const auto blocks = [&](const LA::MPI::Vector &owned) {
-      return block_copy<dim>(owned,
-                             locally_owned_dofs,
-                             locally_relevant_dofs,
-                             displacement.owned.size(),
-                             mpi_communicator);
-    };
-    sources->solution = blocks(solution_owned);
+    sources->solution
+      = ghosted_blocks(solution_owned, locally_relevant_dofs, mpi_communicator);
     data_out.add_data_vector(sources->solution,
                              names,
                              DataOut<dim>::type_dof_data,
@@ -519,11 +504,16 @@ namespace VPContact
     // Contact nodes: status (0 none, 1 stick, 2 slip), traction sigma_tau.
     if (friction_problem)
       {
-        LA::MPI::Vector status(solution_owned);
-        LA::MPI::Vector traction(solution_owned);
+        LA::MPI::Vector status(locally_owned_dofs, mpi_communicator);
+        LA::MPI::Vector traction(locally_owned_dofs, mpi_communicator);
         friction_problem->fill_output(status, traction);
-        sources->status   = blocks(status);
-        sources->traction = blocks(traction);
+        LA::MPI::BlockVector blocks(solution_owned);
+        copy_into_blocks(status, blocks);
+        sources->status
+          = ghosted_blocks(blocks, locally_relevant_dofs, mpi_communicator);
+        copy_into_blocks(traction, blocks);
+        sources->traction
+          = ghosted_blocks(blocks, locally_relevant_dofs, mpi_communicator);
         data_out.add_data_vector(sources->status, sources->status_field);
         data_out.add_data_vector(sources->traction, sources->traction_field);
       }

@@ -105,15 +105,28 @@ namespace VPContact
       "Roller boundary ids or Prescribed displacement boundary ids, or with "
       "friction on the contact boundary (Contact/Friction bound > 0).");
 
+    setup_vectors();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_vectors()
+  {
+    // The owned vectors in blocks: the linear solver works on the
+    // displacement block of the increment in place.
+    const types::global_dof_index n_u = displacement.owned.size();
+    std::vector<IndexSet>         blocks{displacement.owned};
+    if (dof_handler.n_dofs() > n_u)
+      blocks.push_back(locally_owned_dofs.get_view(n_u, dof_handler.n_dofs()));
     displacement.rhs.reinit(displacement.owned, mpi_communicator);
-    displacement.increment.reinit(displacement.owned, mpi_communicator);
-    solution_owned.reinit(locally_owned_dofs, mpi_communicator);
+    solution_owned.reinit(blocks, mpi_communicator);
     solution.reinit(locally_owned_dofs,
                     locally_relevant_dofs,
                     mpi_communicator);
-    increment_owned.reinit(locally_owned_dofs, mpi_communicator);
-    increment_predictor.reinit(locally_owned_dofs, mpi_communicator);
-    newton_update.reinit(displacement.owned, mpi_communicator);
+    increment_owned.reinit(blocks, mpi_communicator);
+    increment_predictor.reinit(displacement.owned, mpi_communicator);
     increment.reinit(locally_owned_dofs,
                      locally_relevant_dofs,
                      mpi_communicator);
@@ -175,9 +188,11 @@ namespace VPContact
   Simulator<dim>::make_constraints(const double           time,
                                    const LA::MPI::Vector *previous)
   {
+    // On the displacement block only: the damage problem keeps the hanging
+    // node constraints of its own block (DamageSystem).
     constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.reinit(displacement.relevant);
+    add_displacement_hanging_nodes();
     boundary_conditions.make_constraints(dof_handler,
                                          constraints,
                                          time,
@@ -185,6 +200,25 @@ namespace VPContact
     if (friction_problem)
       friction_problem->add_stick_constraints(constraints);
     constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_displacement_hanging_nodes()
+  {
+    // deal.II makes them for every component; the damage's are left out.
+    // A displacement node hangs on displacement nodes only.
+    AffineConstraints<double> all(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, all);
+    const types::global_dof_index n_u = displacement.owned.size();
+    for (const auto &line : all.get_lines())
+      if (line.index < n_u)
+        {
+          constraints.add_line(line.index);
+          constraints.add_entries(line.index, line.entries);
+        }
   }
 
 

@@ -57,7 +57,7 @@ namespace VPContact
     // extrapolated (see IncrementPredictor); the active-set iterations of
     // a step then start from the previous iterate.
     if (with_viscoplastic_rate)
-      increment_predictor.predict(increment_owned);
+      increment_predictor.predict(increment_owned.block(0));
     for (unsigned int iteration = 1;; ++iteration)
       {
         assemble_rhs(time, with_viscoplastic_rate, iteration > 1);
@@ -71,13 +71,13 @@ namespace VPContact
           break;
       }
 
-    AssertThrow(all_finite(increment_owned, mpi_communicator),
+    AssertThrow(all_finite(increment_owned.block(0), mpi_communicator),
                 ExcMessage("The displacement increment at t = " + to_text(time)
                            + " is not finite. The output up to the previous "
                              "step is complete in "
                            + output_writer.directory() + "."));
     if (with_viscoplastic_rate)
-      increment_predictor.record(increment_owned);
+      increment_predictor.record(increment_owned.block(0));
     solution_owned += increment_owned;
     ghosts.copy(solution_owned, solution);
   }
@@ -91,11 +91,10 @@ namespace VPContact
     if (displacement.solver.preconditioner_outdated())
       initialize_linear_solver();
     TimerOutput::Scope t(computing_timer, "Solve");
-    copy_start_vector();
     stress_ahead.restart();
     last_linear_iterations
-      += displacement.solver.solve(displacement.increment, displacement.rhs);
-    take_solved_increment();
+      += displacement.solver.solve(increment_owned.block(0), displacement.rhs);
+    share_increment();
   }
 
 
@@ -107,8 +106,8 @@ namespace VPContact
     // With the factors of a Cholesky factorization, the substitutions run
     // in a second thread while this one does the work beside them, and
     // "Solve" times only the wait for them that the work does not hide.
-    // The second thread writes only displacement.increment (and the
-    // factors' workspace); the work beside must read neither it nor
+    // The second thread writes only the increment (and the factors'
+    // workspace); the work beside must read neither it nor
     // displacement.rhs, and must not change the linear solver. Other
     // methods, and the factors after the matrix changed in place, solve
     // after the work.
@@ -125,12 +124,11 @@ namespace VPContact
     // here: once the damage has spread, the damage step is the longer of
     // the two. CellKinematics checks the increment's layout here (the check
     // may call MPI).
-    copy_start_vector();
     const double *const increment_entries
       = cell_kinematics.local_entries(increment);
     stress_ahead.restart();
     std::future<unsigned int> solving = displacement.solver.solve_in_background(
-      displacement.increment,
+      increment_owned.block(0),
       displacement.rhs,
       [this, increment_entries]() { update_stress_ahead(increment_entries); });
     beside();
@@ -143,28 +141,11 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::copy_start_vector()
+  Simulator<dim>::share_increment()
   {
-    // K du = b on the displacement block, whose entries lead the local
-    // entries of the full vector (see setup_dofs()), from the current
-    // increment.
-    std::copy_n(increment_owned.begin(),
-                displacement.increment.locally_owned_size(),
-                displacement.increment.begin());
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::take_solved_increment()
-  {
-    // The block's solution back into the full increment, with the
-    // constrained entries from the others.
-    std::copy(displacement.increment.begin(),
-              displacement.increment.end(),
-              increment_owned.begin());
-    distribute_constraints(constraints, increment_owned);
+    // The solver leaves the constrained entries of the displacement block
+    // as they were; they are set from the others.
+    distribute_constraints(constraints, increment_owned.block(0));
     ghosts.copy(increment_owned, increment);
   }
 
@@ -232,7 +213,7 @@ namespace VPContact
     // The floor of a time step: one solve of the displacement system with
     // everything reused (matrix and preconditioner as they are, the last
     // right-hand side), from a zero start vector.
-    LA::MPI::Vector x(displacement.increment);
+    LA::MPI::Vector x(increment_owned.block(0));
     x = 0.;
     Timer              timer;
     const unsigned int iterations

@@ -121,13 +121,12 @@ namespace VPContact
                   && increment.locally_owned_size()
                        == increment_owned.locally_owned_size(),
                 ExcInternalError());
-    std::copy(displacement.increment.begin(),
-              displacement.increment.end(),
-              increment_owned.begin());
-    distribute_owned_constraints(constraints, increment_owned);
-    std::copy(increment_owned.begin(),
-              increment_owned.end(),
-              increment.begin());
+    distribute_owned_constraints(constraints, increment_owned.block(0));
+    double *entry = increment.begin();
+    for (unsigned int b = 0; b < increment_owned.n_blocks(); ++b)
+      entry = std::copy(increment_owned.block(b).begin(),
+                        increment_owned.block(b).end(),
+                        entry);
     stress_chunk_largest.resize(stress_chunks);
     stress_ahead.run_ahead(stress_chunks,
                            [this, increment_entries](const unsigned int c) {

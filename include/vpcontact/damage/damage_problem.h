@@ -65,17 +65,18 @@ namespace VPContact
                   const MPI_Comm            communicator);
 
     /**
-     * Once per mesh: the damage numbering, vectors, lumped mass, bounds,
-     * the matrix and its preconditioner, and zeta_0 interpolated into the
-     * damage block of @p solution_owned. @p dof_handler and @p quadrature
-     * (the rule of the stress history) must outlive the next setup().
+     * Once per mesh: the damage block's index sets, vectors, lumped mass,
+     * bounds, the matrix and its preconditioner, and zeta_0 interpolated
+     * into the damage block (block 1) of @p solution_owned. @p dof_handler and
+     * @p quadrature (the rule of the stress history) must outlive the next
+     * setup().
      */
     void
     setup(const DoFHandler<dim> &dof_handler,
           const Quadrature<dim> &quadrature,
           const IndexSet        &locally_owned_dofs,
           const IndexSet        &locally_relevant_dofs,
-          LA::MPI::Vector       &solution_owned);
+          LA::MPI::BlockVector  &solution_owned);
 
     /**
      * Step 4 of step @p n: zeta_n from zeta_{n-1} (the damage block of
@@ -83,14 +84,14 @@ namespace VPContact
      * zeta_n stays here until store().
      */
     void
-    solve(const unsigned int        n,
-          const LA::MPI::Vector    &solution_owned,
-          const StressHistory<dim> &history);
+    solve(const unsigned int          n,
+          const LA::MPI::BlockVector &solution_owned,
+          const StressHistory<dim>   &history);
 
     /// zeta_n clipped onto [0, 1] (by the solver tolerance) into the
     /// damage block of @p solution_owned.
     void
-    store(const unsigned int n, LA::MPI::Vector &solution_owned);
+    store(const unsigned int n, LA::MPI::BlockVector &solution_owned);
 
     /// The step's damage columns of @p statistics (the damaged volume
     /// fraction from @p quantities) and its part of the screen @p line.
@@ -135,7 +136,7 @@ namespace VPContact
                     const std::vector<types::global_dof_index> &dof_indices,
                     const Vector<double>                       &cell_mass);
     void
-    interpolate_initial_damage(LA::MPI::Vector &solution_owned);
+    interpolate_initial_damage(LA::MPI::BlockVector &solution_owned);
     std::pair<double, double>
     range(const LA::MPI::Vector &v) const;
     void

@@ -8,6 +8,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <Epetra_Import.h>
+#include <Epetra_Map.h>
+#include <Epetra_Vector.h>
 #include <memory>
 #include <vector>
 
@@ -27,6 +29,15 @@ namespace VPContact
    */
   void
   copy_owned_values(const LA::MPI::Vector &from, LA::MPI::Vector &to);
+
+  /**
+   * The owned entries of @p full, a vector on all degrees of freedom
+   * numbered by blocks, into the blocks of @p blocks, which split the same
+   * owned entries: on each rank the owned entries of block b follow those
+   * of the blocks before it in the local entries of @p full.
+   */
+  void
+  copy_into_blocks(const LA::MPI::Vector &full, LA::MPI::BlockVector &blocks);
 
 
 
@@ -59,6 +70,16 @@ namespace VPContact
     void
     copy(const LA::MPI::Vector &owned, LA::MPI::Vector &ghosted);
 
+    /**
+     * ghosted = owned for a vector of blocks and a ghosted vector on all
+     * of their degrees of freedom, numbered by blocks (block b's indices
+     * follow those of the blocks before it): each block goes straight into
+     * its part of the ghosted vector's entries, which deal.II keeps sorted
+     * by index, without a vector on all degrees of freedom in between.
+     */
+    void
+    copy(const LA::MPI::BlockVector &owned, LA::MPI::Vector &ghosted);
+
   private:
     /// One pair of layouts seen: copies of the two layouts (they keep the
     /// layout data alive, so that the same data pointer means the same
@@ -76,6 +97,22 @@ namespace VPContact
     /// the least recently used when max_pairs are kept.
     LayoutPair &
     pair_for(const Epetra_BlockMap &source, const Epetra_BlockMap &target);
+
+    /// The ghosted vector's part for each block of a block vector: its
+    /// first local entry, and its entries as a layout in the block's own
+    /// indices (the index less the block's first), for as long as the
+    /// ghosted vector keeps its layout.
+    struct BlockParts
+    {
+      std::unique_ptr<Epetra_BlockMap>              ghosted_layout;
+      std::vector<std::size_t>                      first_entry;
+      std::vector<std::unique_ptr<Epetra_BlockMap>> layouts;
+    };
+    BlockParts block_parts;
+
+    void
+    make_block_parts(const LA::MPI::BlockVector &owned,
+                     const LA::MPI::Vector      &ghosted);
 
     /// The pairs, the most recently used first.
     std::vector<std::unique_ptr<LayoutPair>> pairs;

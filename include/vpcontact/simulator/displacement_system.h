@@ -1,6 +1,6 @@
 // The linear system of a step's displacement increment, on the displacement
-// block of the degrees of freedom: matrix, right-hand side, the solver's
-// vector, and the LinearSolver that solves it.
+// block of the degrees of freedom: matrix, right-hand side and the
+// LinearSolver that solves it.
 #ifndef vpcontact_displacement_system_h
 #define vpcontact_displacement_system_h
 
@@ -33,10 +33,10 @@ namespace VPContact
     IndexSet relevant;
     /// The shape functions of a cell that belong to the displacement.
     std::vector<unsigned int> shape_functions;
-    /// K, b, and the solver's vector (du on the block).
+    /// K and b; the solver's vector is the displacement block of the
+    /// simulator's increment.
     LA::SparseMatrix matrix;
     LA::MPI::Vector  rhs;
-    LA::MPI::Vector  increment;
     /// Declared after the matrix, so destroyed before it: a factorization
     /// refers to the matrix.
     LinearSolver solver;

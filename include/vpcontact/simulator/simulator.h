@@ -228,10 +228,9 @@ namespace VPContact
     solve_displacement();
     void
     solve_displacement_beside(const std::function<void()> &beside);
+    /// After a solve: the constrained entries of du, and its ghosted copy.
     void
-    copy_start_vector();
-    void
-    take_solved_increment();
+    share_increment();
     bool
     friction_sets_settled(const double time, const unsigned int iteration);
     void
@@ -255,9 +254,13 @@ namespace VPContact
     void
     number_dofs();
     void
+    setup_vectors();
+    void
     setup_displacement_matrix();
     void
     make_constraints(const double time, const LA::MPI::Vector *previous);
+    void
+    add_displacement_hanging_nodes();
     void
     setup_stress_history();
     NearNullSpace
@@ -488,18 +491,18 @@ namespace VPContact
 
     /// K du = b on the displacement block, and its solver.
     DisplacementSystem displacement;
-    /// u_n: owned part and ghosted copy for evaluation and output.
-    LA::MPI::Vector solution_owned;
-    LA::MPI::Vector solution;
-    /// du = u_n - u_{n-1}: owned part (the solver's vector), ghosted copy.
-    LA::MPI::Vector increment_owned;
-    LA::MPI::Vector increment;
+    /// u_n: owned part, in the blocks (displacement, damage), and a
+    /// ghosted copy on all degrees of freedom for evaluation and output
+    /// (one array of local entries, which CellKinematics reads).
+    LA::MPI::BlockVector solution_owned;
+    LA::MPI::Vector      solution;
+    /// du = u_n - u_{n-1}: owned part, whose displacement block is the
+    /// linear solver's vector, and its ghosted copy.
+    LA::MPI::BlockVector increment_owned;
+    LA::MPI::Vector      increment;
     /// The copies of both into their ghosted vectors, with the import kept
     /// (deal.II 9.4's assignment builds one per call; see GhostExchange).
     GhostExchange ghosts;
-    /// A Newton correction of the implicit step (owned, displacement
-    /// block).
-    LA::MPI::Vector newton_update;
 
     StressHistory<dim> stress_history;
 
