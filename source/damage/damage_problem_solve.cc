@@ -294,6 +294,22 @@ namespace VPContact
 
 
   template <int dim>
+  ScalarNodeSpace<dim>
+  DamageProblem<dim>::node_space() const
+  {
+    ScalarNodeSpace<dim> space;
+    space.owned       = system.owned();
+    space.relevant    = system.relevant();
+    space.constraints = &system.hanging_node_constraints();
+    space.cell_nodes  = [this](const auto &cell, auto &indices) {
+      system.dof_indices(cell, indices);
+    };
+    return space;
+  }
+
+
+
+  template <int dim>
   void
   DamageProblem<dim>::write_checkpoint(
     LA::MPI::Vector               &sets_owned,

@@ -235,7 +235,7 @@ namespace VPContact
           const double *const cell_moments
             = &moments[(i * n_nodes + a) * n_components];
           const auto dof = node_indices[i * n_nodes + a];
-          if (!constraints.is_constrained(dof))
+          if (!space.constraints->is_constrained(dof))
             {
               double *const node
                 = values
@@ -244,7 +244,8 @@ namespace VPContact
                 node[c] += cell_moments[c];
             }
           else
-            for (const auto &entry : *constraints.get_constraint_entries(dof))
+            for (const auto &entry :
+                 *space.constraints->get_constraint_entries(dof))
               {
                 double *const node = values
                                      + partitioner.global_to_local(entry.first)

@@ -16,31 +16,32 @@ namespace VPContact
   ErrorEstimator<dim>::setup(const parallel::TriangulationBase<dim> &tria,
                              const std::vector<cell_iterator> &owned_cells,
                              const CellKinematics<dim>        &cell_kinematics,
-                             StressHistory<dim>               &stress_history)
+                             StressHistory<dim>               &stress_history,
+                             const ScalarNodeSpace<dim>       *nodes)
   {
-    // A scalar Q1 (P1) space on the mesh; its owned and ghost nodes hold the
-    // recovered fields, all components of a node side by side (the tensor
-    // product of the node's index with the components).
+    // A scalar Q1 (P1) space on the mesh, the damage block's where there is
+    // one; its owned and ghost nodes hold the recovered fields, all
+    // components of a node side by side (the tensor product of the node's
+    // index with the components).
     triangulation = &tria;
     cells         = &owned_cells;
     kinematics    = &cell_kinematics;
     history       = &stress_history;
     with_damage   = cell_kinematics.has_damage();
-    recovery_fe   = cell_kinematics.scalar_element().clone();
-    recovery_dofs.reinit(tria);
-    recovery_dofs.distribute_dofs(*recovery_fe);
-    const IndexSet owned = recovery_dofs.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(recovery_dofs, relevant);
-    constraints.clear();
-    constraints.reinit(relevant);
-    DoFTools::make_hanging_node_constraints(recovery_dofs, constraints);
-    constraints.close();
+    if (nodes)
+      {
+        space = *nodes;
+        recovery_dofs.clear();
+      }
+    else
+      make_own_space(tria);
+    const IndexSet &owned    = space.owned;
+    const IndexSet &relevant = space.relevant;
 
     constexpr unsigned int n_tensor
       = SymmetricTensor<2, dim>::n_independent_components;
     n_components = 2 * n_tensor + (with_damage ? dim : 0);
-    n_nodes      = recovery_fe->n_dofs_per_cell();
+    n_nodes      = cell_kinematics.scalar_element().n_dofs_per_cell();
     n_q = owned_cells.empty() ? 0 : stress_history.JxW(owned_cells[0]).size();
     AssertThrow(n_q <= max_points && n_nodes <= max_nodes,
                 ExcMessage("ErrorEstimator: more quadrature points or nodes "
@@ -68,6 +69,35 @@ namespace VPContact
 
   template <int dim>
   void
+  ErrorEstimator<dim>::make_own_space(
+    const parallel::TriangulationBase<dim> &tria)
+  {
+    // Without damage the FESystem has no scalar block: a DoFHandler of the
+    // scalar element on the same mesh.
+    recovery_fe = kinematics->scalar_element().clone();
+    recovery_dofs.reinit(tria);
+    recovery_dofs.distribute_dofs(*recovery_fe);
+    space.owned = recovery_dofs.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(recovery_dofs, space.relevant);
+    own_constraints.clear();
+    own_constraints.reinit(space.relevant);
+    DoFTools::make_hanging_node_constraints(recovery_dofs, own_constraints);
+    own_constraints.close();
+    space.constraints = &own_constraints;
+    space.cell_nodes  = [this](const cell_iterator                  &cell,
+                              std::vector<types::global_dof_index> &dofs) {
+      const cell_iterator scalar_cell(triangulation,
+                                      cell->level(),
+                                      cell->index(),
+                                      &recovery_dofs);
+      scalar_cell->get_dof_indices(dofs);
+    };
+  }
+
+
+
+  template <int dim>
+  void
   ErrorEstimator<dim>::setup_nodes_and_mass()
   {
     // The nodes of every owned cell, by global index and by position in the
@@ -81,26 +111,23 @@ namespace VPContact
     Vector<double>                       cell_mass(n_nodes);
     for (std::size_t i = 0; i < cells->size(); ++i)
       {
-        const typename DoFHandler<dim>::active_cell_iterator cell(
-          triangulation,
-          (*cells)[i]->level(),
-          (*cells)[i]->index(),
-          &recovery_dofs);
-        cell->get_dof_indices(dofs);
+        space.cell_nodes((*cells)[i], dofs);
         const auto JxW = history->JxW((*cells)[i]);
         AssertThrow(JxW.size() == n_q, ExcInternalError());
         cell_mass = 0;
         for (unsigned int q = 0; q < n_q; ++q)
           for (unsigned int a = 0; a < n_nodes; ++a)
             cell_mass(a) += kinematics->shape_value(q, a) * JxW[q];
-        constraints.distribute_local_to_global(cell_mass, dofs, lumped_mass);
+        space.constraints->distribute_local_to_global(cell_mass,
+                                                      dofs,
+                                                      lumped_mass);
         for (unsigned int a = 0; a < n_nodes; ++a)
           {
             node_indices[i * n_nodes + a] = dofs[a];
             node_locals[i * n_nodes + a]
               = lumped_mass.get_partitioner()->global_to_local(dofs[a]);
-            has_constraints[i]
-              = has_constraints[i] || constraints.is_constrained(dofs[a]);
+            has_constraints[i] = has_constraints[i]
+                                 || space.constraints->is_constrained(dofs[a]);
             Assert(recovered.get_partitioner()->global_to_local(dofs[a]
                                                                 * n_components)
                      == node_locals[i * n_nodes + a] * n_components,
@@ -162,11 +189,12 @@ namespace VPContact
         {
           const auto dof   = node_indices[i * n_nodes + a];
           const auto local = node_locals[i * n_nodes + a];
-          if (!constraints.is_constrained(dof) || listed[local])
+          if (!space.constraints->is_constrained(dof) || listed[local])
             continue;
           listed[local] = true;
           hanging_nodes.push_back(local);
-          for (const auto &entry : *constraints.get_constraint_entries(dof))
+          for (const auto &entry :
+               *space.constraints->get_constraint_entries(dof))
             hanging_parents.emplace_back(partitioner.global_to_local(
                                            entry.first),
                                          entry.second);

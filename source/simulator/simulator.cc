@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 
 namespace VPContact
 {
@@ -230,6 +231,19 @@ namespace VPContact
                               locally_relevant_dofs,
                               solution_owned);
         ghosts.copy(solution_owned, solution);
+      }
+    // The estimate recovers its fields on the damage block where there is
+    // one, else on a scalar space of its own.
+    if (error_estimator.is_active())
+      {
+        const std::optional<ScalarNodeSpace<dim>> damage_nodes
+          = (damage_problem ? std::optional(damage_problem->node_space()) :
+                              std::nullopt);
+        error_estimator.setup(triangulation,
+                              owned_cells,
+                              cell_kinematics,
+                              stress_history,
+                              damage_nodes ? &*damage_nodes : nullptr);
       }
     // A resumed run takes the state of its checkpoint's step and continues
     // after it (simulator_checkpoint.cc).

@@ -309,11 +309,6 @@ namespace VPContact
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         owned_cells.push_back(cell);
-    if (error_estimator.is_active())
-      error_estimator.setup(triangulation,
-                            owned_cells,
-                            cell_kinematics,
-                            stress_history);
   }
 
 

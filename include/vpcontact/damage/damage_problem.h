@@ -8,6 +8,7 @@
 #include <vpcontact/damage/damage_model.h>
 #include <vpcontact/damage/damage_system.h>
 #include <vpcontact/fe/quadrature_history.h>
+#include <vpcontact/fe/scalar_node_space.h>
 #include <vpcontact/linear_algebra/ghost_exchange.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/linear_algebra/linear_solver.h>
@@ -112,6 +113,11 @@ namespace VPContact
     /// The damage degrees of freedom in the full numbering.
     const IndexSet &
     full_dofs() const;
+
+    /// The damage block as a scalar node space (for the error estimate's
+    /// recovery), valid until the next setup().
+    ScalarNodeSpace<dim>
+    node_space() const;
 
     /// The active sets into the damage entries of @p sets_owned (on all
     /// degrees of freedom), and the counters a resumed run needs.

@@ -7,6 +7,7 @@
 
 #include <vpcontact/fe/cell_kinematics.h>
 #include <vpcontact/fe/quadrature_history.h>
+#include <vpcontact/fe/scalar_node_space.h>
 #include <vpcontact/material/viscoplastic_law.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -90,16 +91,18 @@ namespace VPContact
     estimates_step(const unsigned int n, const unsigned int n_steps) const;
 
     /**
-     * On a new mesh: the recovery space (scalar Q1 on @p triangulation),
-     * its constraints and lumped mass, for the locally owned cells
-     * @p owned_cells and the data of @p kinematics and @p history, which
-     * must stay valid until the next setup().
+     * On a new mesh: the recovery space and its lumped mass, for the
+     * locally owned cells @p owned_cells and the data of @p kinematics and
+     * @p history. The space is @p nodes if given (the damage block), else
+     * a scalar Q1 (P1) space of its own on @p triangulation. All must stay
+     * valid until the next setup().
      */
     void
     setup(const parallel::TriangulationBase<dim> &triangulation,
           const std::vector<cell_iterator>       &owned_cells,
           const CellKinematics<dim>              &kinematics,
-          StressHistory<dim>                     &history);
+          StressHistory<dim>                     &history,
+          const ScalarNodeSpace<dim>             *nodes = nullptr);
 
     /**
      * The estimate at t_n, for the step size @p k and the local entries
@@ -143,6 +146,8 @@ namespace VPContact
     {
       double stress = 0, strain = 0, damage = 0, time = 0;
     };
+    void
+    make_own_space(const parallel::TriangulationBase<dim> &triangulation);
     void
     setup_nodes_and_mass();
     void
@@ -199,10 +204,13 @@ namespace VPContact
     /// gradient (dim).
     unsigned int n_components = 0;
 
-    /// Q1 or P1, the scalar element of the mesh's cells.
+    /// The recovery space: given, or made here (then on recovery_dofs,
+    /// with the scalar element of the mesh's cells, Q1 or P1, and the
+    /// constraints own_constraints).
+    ScalarNodeSpace<dim>                space;
     std::unique_ptr<FiniteElement<dim>> recovery_fe;
     DoFHandler<dim>                     recovery_dofs;
-    AffineConstraints<double>           constraints;
+    AffineConstraints<double>           own_constraints;
     /// The recovered fields in one ghosted vector, all components of a node
     /// side by side: node j's (scalar local index) component c at local
     /// entry j * n_components + c. One exchange per step moves them all,
