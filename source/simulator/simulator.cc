@@ -49,16 +49,11 @@ namespace VPContact
                       Patterns::Integer(2, 3),
                       "Space dimension of the scene: 2 or 3.");
     Geometry<dim>::declare_parameters(prm);
-    ElasticMaterial<dim>::declare_parameters(prm);
-    ViscoplasticityParameters<dim>::declare_parameters(prm);
+    DisplacementProblem<dim>::declare_parameters(prm);
     DamageModel<dim>::declare_parameters(prm);
-    BoundaryConditions<dim>::declare_parameters(prm);
-    TrescaFriction<dim>::declare_parameters(prm);
     InitialConditions::declare_parameters(prm);
     TimeDiscretization::declare_parameters(prm);
-    LinearSolver::declare_parameters(prm);
     DamageProblem<dim>::declare_parameters(prm);
-    IncrementPredictor::declare_parameters(prm);
     OutputWriter<dim>::declare_parameters(prm);
     Verification<dim>::declare_parameters(prm);
     MonitorPoints<dim>::declare_parameters(prm);
@@ -88,16 +83,10 @@ namespace VPContact
     , quadrature(discretization.quadrature())
     , mapping(discretization.mapping())
     , dof_handler(triangulation)
+    , displacement_problem(prm, access())
   {
-    material.parse_parameters(prm);
-    viscoplasticity.parse_parameters(prm);
-    viscoplastic_law = viscoplasticity.create_law(prm);
-    boundary_conditions.parse_parameters(prm);
-    friction.parse_parameters(prm);
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
-    displacement.solver.parse_parameters(prm);
-    increment_predictor.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     monitor_points.parse_parameters(prm);
     verification.parse_parameters(prm, fe.n_components());
@@ -116,7 +105,7 @@ namespace VPContact
           = std::make_unique<DamageProblem<dim>>(prm,
                                                  damage_model,
                                                  time_discretization,
-                                                 displacement.solver,
+                                                 displacement_problem.solver(),
                                                  output_writer.directory(),
                                                  computing_timer,
                                                  mpi_communicator);
@@ -140,21 +129,30 @@ namespace VPContact
                    "Checkpoint/Every steps = 0, Checkpoint/Every seconds = 0 "
                    "and Resume from checkpoint = false, or run the mesh of "
                    "one cycle as a single run."));
-    check_stability_limits();
+    displacement_problem.check_stability_limits();
     check_simplex_support();
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      if (fe.system_to_component_index(i).first < dim)
-        displacement.shape_functions.push_back(i);
   }
 
 
 
   template <int dim>
-  Simulator<dim>::~Simulator()
+  SimulatorAccess<dim>
+  Simulator<dim>::access() const
   {
-    // Members are destroyed in reverse order of declaration, the matrices
-    // before the linear solver; a factorization (MUMPS) must go first.
-    displacement.solver.clear();
+    return {mpi_communicator,
+            pcout,
+            computing_timer,
+            discretization,
+            triangulation,
+            fe,
+            quadrature,
+            mapping,
+            dof_handler,
+            locally_owned_dofs,
+            locally_relevant_dofs,
+            time_discretization,
+            damage_model,
+            output_writer};
   }
 
 
@@ -200,7 +198,7 @@ namespace VPContact
     output_writer.finish_field_output(mpi_communicator);
     print_summary(timer.wall_time());
     if (output_writer.report_solve_floor())
-      report_solve_floor();
+      displacement_problem.report_solve_floor();
     timer.stop();
     convergence_study.finish_cycle(triangulation,
                                    dof_handler.n_dofs(),
@@ -222,15 +220,15 @@ namespace VPContact
     // matrix; returns the first step to compute.
     start_cycle(cycle);
     setup_dofs();
-    setup_stress_history();
+    displacement_problem.setup_stress_history();
     if (damage_problem)
       {
         damage_problem->setup(dof_handler,
                               quadrature,
                               locally_owned_dofs,
                               locally_relevant_dofs,
-                              solution_owned);
-        ghosts.copy(solution_owned, solution);
+                              displacement_problem.solution_blocks());
+        displacement_problem.update_ghosted_solution();
       }
     // The estimate recovers its fields on the damage block where there is
     // one, else on a scalar space of its own.
@@ -240,17 +238,17 @@ namespace VPContact
           = (damage_problem ? std::optional(damage_problem->node_space()) :
                               std::nullopt);
         error_estimator.setup(triangulation,
-                              owned_cells,
-                              cell_kinematics,
-                              stress_history,
+                              displacement_problem.cells(),
+                              displacement_problem.kinematics(),
+                              displacement_problem.history(),
                               damage_nodes ? &*damage_nodes : nullptr);
       }
     // A resumed run takes the state of its checkpoint's step and continues
     // after it (simulator_checkpoint.cc).
     const unsigned int first_step
       = (checkpointing.resume() ? restore_checkpoint() + 1 : 1);
-    assemble_stiffness_matrix();
-    initialize_linear_solver();
+    displacement_problem.assemble_stiffness_matrix();
+    displacement_problem.initialize_linear_solver();
     print_header();
     return first_step;
   }
@@ -319,12 +317,13 @@ namespace VPContact
       return {std::numeric_limits<double>::quiet_NaN(),
               std::numeric_limits<double>::quiet_NaN()};
     TimerOutput::Scope t(computing_timer, "Error estimate");
-    return error_estimator.estimate_step(n,
-                                         time_discretization.step_size(),
-                                         cell_kinematics.local_entries(
-                                           solution),
-                                         *viscoplastic_law,
-                                         material.youngs_modulus());
+    return error_estimator.estimate_step(
+      n,
+      time_discretization.step_size(),
+      displacement_problem.kinematics().local_entries(
+        displacement_problem.ghosted_solution()),
+      displacement_problem.law(),
+      displacement_problem.elastic_material().youngs_modulus());
   }
 
 
@@ -346,11 +345,11 @@ namespace VPContact
     // are the paper's data. Elastic equilibrium solves the elastic problem
     // with the load at t = 0, starting from that zero state, without the
     // viscoplastic rate: then sigma_0 = E eps(u_0).
-    last_linear_iterations = 0;
+    displacement_problem.reset_linear_iterations();
     if (initial_conditions.elastic_equilibrium())
       {
-        solve_increment(0., false);
-        update_stress(0);
+        displacement_problem.solve_increment(0., false);
+        displacement_problem.update_stress(0);
       }
   }
 
@@ -377,23 +376,28 @@ namespace VPContact
     // (update_stress_ahead()), which the damage step does not read. The
     // implicit scheme's Newton iterations keep the order of the steps.
     const std::function<void()> damage_step = [this, n]() {
-      damage_problem->solve(n, solution_owned, stress_history);
+      damage_problem->solve(n,
+                            displacement_problem.solution_blocks(),
+                            displacement_problem.history());
     };
-    if (viscoplasticity.implicit())
+    if (displacement_problem.implicit())
       {
-        solve_increment_implicit(time_discretization.time(n));
+        displacement_problem.solve_increment_implicit(
+          time_discretization.time(n));
         if (damage_problem)
           damage_step();
       }
     else
-      solve_increment(time_discretization.time(n),
-                      true,
-                      damage_problem ? damage_step : std::function<void()>());
-    update_stress(n);
+      displacement_problem.solve_increment(time_discretization.time(n),
+                                           true,
+                                           damage_problem ?
+                                             damage_step :
+                                             std::function<void()>());
+    displacement_problem.update_stress(n);
     if (damage_problem)
       {
-        damage_problem->store(n, solution_owned);
-        ghosts.copy(solution_owned, solution);
+        damage_problem->store(n, displacement_problem.solution_blocks());
+        displacement_problem.update_ghosted_solution();
       }
   }
 

@@ -109,7 +109,8 @@ namespace VPContact
         const auto maxima = error_estimator.running_maxima();
         metadata.counters.insert(maxima.begin(), maxima.end());
       }
-    metadata.counters["recorded_increments"] = increment_predictor.n_recorded();
+    metadata.counters["recorded_increments"]
+      = displacement_problem.predictor().n_recorded();
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(
       metadata,
@@ -147,30 +148,19 @@ namespace VPContact
                          locally_relevant_dofs,
                          mpi_communicator);
     sets = sets_owned;
-    // The increments on all degrees of freedom, as the files hold them
-    // (the predictor's on the displacement block, the damage block zero).
-    std::array<LA::MPI::Vector, 3> increments;
-    LA::MPI::BlockVector           recorded(increment_owned);
-    for (unsigned int i = 0; i < increments.size(); ++i)
-      {
-        increments[i].reinit(locally_owned_dofs,
-                             locally_relevant_dofs,
-                             mpi_communicator);
-        if (i > 0)
-          {
-            recorded = 0.;
-            copy_owned_values(increment_predictor.recorded(i),
-                              recorded.block(0));
-          }
-        ghosts.copy(i == 0 ? increment_owned : recorded, increments[i]);
-      }
+    const std::array<LA::MPI::Vector, 3> increments
+      = displacement_problem.increments_for_checkpoint();
     const std::vector<const LA::MPI::Vector *> vectors
-      = {&solution, &increments[0], &increments[1], &increments[2], &sets};
+      = {&displacement_problem.ghosted_solution(),
+         &increments[0],
+         &increments[1],
+         &increments[2],
+         &sets};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
     CheckpointFields::save(checkpointed_mesh(triangulation),
                            dof_handler,
                            vectors,
-                           stress_history,
+                           displacement_problem.history(),
                            quadrature.size(),
                            folder + "/mesh");
     return physics_counters;
@@ -295,13 +285,10 @@ namespace VPContact
       stop_together(mpi_communicator, [&]() {
         object->read_checkpoint(sets_owned, sets, counter);
       });
-    make_constraints(time_discretization.time(checkpoint.step), &solution);
-
+    displacement_problem.resume_at(time_discretization.time(checkpoint.step),
+                                   static_cast<unsigned int>(
+                                     counter("recorded_increments")));
     restore_output_records(checkpoint);
-    copy_owned_values(increment_owned.block(0),
-                      increment_predictor.recorded(0));
-    increment_predictor.set_n_recorded(
-      static_cast<unsigned int>(counter("recorded_increments")));
 
     pcout << "Resuming from the checkpoint in " << folder << ": step "
           << checkpoint.step << ", t = " << checkpoint.time;
@@ -321,9 +308,8 @@ namespace VPContact
   void
   Simulator<dim>::read_checkpoint_fields(LA::MPI::Vector &sets_owned)
   {
-    // The files hold vectors on all degrees of freedom; the run keeps the
-    // solution and the increment in blocks, the predictor's increments on
-    // the displacement block.
+    // The files hold vectors on all degrees of freedom (see
+    // DisplacementProblem::restore_fields()).
     std::array<LA::MPI::Vector, 4> full;
     for (auto &v : full)
       v.reinit(locally_owned_dofs, mpi_communicator);
@@ -333,18 +319,9 @@ namespace VPContact
     CheckpointFields::load(checkpointed_mesh(triangulation),
                            dof_handler,
                            vectors,
-                           stress_history,
+                           displacement_problem.history(),
                            quadrature.size());
-    copy_into_blocks(full[0], solution_owned);
-    copy_into_blocks(full[1], increment_owned);
-    LA::MPI::BlockVector recorded(increment_owned);
-    for (unsigned int i = 1; i < 3; ++i)
-      {
-        copy_into_blocks(full[i + 1], recorded);
-        copy_owned_values(recorded.block(0), increment_predictor.recorded(i));
-      }
-    ghosts.copy(solution_owned, solution);
-    ghosts.copy(increment_owned, increment);
+    displacement_problem.restore_fields(full);
   }
 
 

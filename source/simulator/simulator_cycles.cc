@@ -40,8 +40,8 @@ namespace VPContact
       convergence_study.start_cycle(cycle, triangulation));
     convergence_study.check_reference_times(time_discretization);
 
-    statistics             = Statistics();
-    last_linear_iterations = 0;
+    statistics = Statistics();
+    displacement_problem.reset_linear_iterations();
     verification.restore_running_maxima({}); // each cycle's summary is its own
     computing_timer.reset();
   }
@@ -54,10 +54,11 @@ namespace VPContact
   {
     // The quadrature point data live on the cells of the old mesh; the next
     // cycle starts from t = 0 and sets them up again.
-    stress_history.clear();
-    convergence_study.refine(triangulation,
-                             error_estimator.cell_indicators(),
-                             boundary_conditions.contact_boundary_ids());
+    displacement_problem.history().clear();
+    convergence_study.refine(
+      triangulation,
+      error_estimator.cell_indicators(),
+      displacement_problem.boundaries().contact_boundary_ids());
   }
 
 
@@ -68,7 +69,8 @@ namespace VPContact
   {
     // This rank's cells: vertices, nodal displacement and damage, and the
     // stress at the quadrature points.
-    Snapshot<dim> snapshot;
+    const LA::MPI::Vector &solution = displacement_problem.ghosted_solution();
+    Snapshot<dim>          snapshot;
     snapshot.time                            = time;
     snapshot.has_damage                      = damage_model.is_active();
     constexpr unsigned int                 V = Snapshot<dim>::n_vertices;
@@ -89,7 +91,7 @@ namespace VPContact
                            solution(cell->vertex_dof_index(v, dim)) :
                            1.);
             }
-          const auto history = stress_history.get_data(cell);
+          const auto history = displacement_problem.history().get_data(cell);
           for (unsigned int q = 0; q < V; ++q)
             sigma[q] = history[q].stress;
           snapshot.add_cell(cell->id(), vertices, u, zeta, sigma);

@@ -192,6 +192,31 @@ namespace VPContact
 
 
 
+    // The contact nodes' status and tangential traction into @p sources,
+    // in the blocks of @p layout (the solution's).
+    template <int dim>
+    void
+    add_contact_fields(const FrictionProblem<dim> &friction,
+                       const LA::MPI::BlockVector &layout,
+                       const IndexSet             &relevant_dofs,
+                       FieldSources<dim>          &sources)
+    {
+      const MPI_Comm  communicator = layout.block(0).get_mpi_communicator();
+      LA::MPI::Vector status(layout.locally_owned_elements(), communicator);
+      LA::MPI::Vector traction(status);
+      friction.fill_output(status, traction);
+      LA::MPI::BlockVector blocks(layout);
+      copy_into_blocks(status, blocks);
+      sources.status = ghosted_blocks(blocks, relevant_dofs, communicator);
+      copy_into_blocks(traction, blocks);
+      sources.traction = ghosted_blocks(blocks, relevant_dofs, communicator);
+      sources.data_out.add_data_vector(sources.status, sources.status_field);
+      sources.data_out.add_data_vector(sources.traction,
+                                       sources.traction_field);
+    }
+
+
+
     std::string
     format(const char *pattern, const double value)
     {
@@ -211,20 +236,24 @@ namespace VPContact
       = Utilities::MPI::n_mpi_processes(mpi_communicator);
     pcout << "vpcontact: " << dim << "D quasistatic viscoplastic body ("
           << (dim == 3 ? "3D" :
-              material.plane_hypothesis()
+              displacement_problem.elastic_material().plane_hypothesis()
                   == ElasticMaterial<dim>::PlaneHypothesis::plane_stress ?
                          "plane stress" :
                          "plane strain")
-          << "), E = " << material.youngs_modulus()
-          << ", nu = " << material.poisson_ratio() << '\n'
-          << "  viscoplastic law: " << viscoplastic_law->description() << '\n'
+          << "), E = "
+          << displacement_problem.elastic_material().youngs_modulus()
+          << ", nu = "
+          << displacement_problem.elastic_material().poisson_ratio() << '\n'
+          << "  viscoplastic law: " << displacement_problem.law().description()
+          << '\n'
           << "  initial state: " << initial_conditions.description() << '\n'
           << "  damage: " << damage_model.description() << '\n'
-          << "  boundary: " << boundary_conditions.summary() << '\n'
+          << "  boundary: " << displacement_problem.boundaries().summary()
+          << '\n'
           << "  contact: "
-          << (!boundary_conditions.has_contact_boundary() ?
+          << (!displacement_problem.boundaries().has_contact_boundary() ?
                 "none" :
-              friction_problem ?
+              displacement_problem.contact() ?
                 "bilateral (u.nu = 0) with Tresca friction, primal-dual "
                 "active set" :
                 "bilateral (u.nu = 0), frictionless (friction bound 0)")
@@ -262,7 +291,9 @@ namespace VPContact
     // A displacement far beyond the body's size is no longer small strain:
     // an unstable or unbounded step, stopped as the stress is (see
     // update_stress()).
-    const double u_limit = viscoplasticity.divergence_limit() * body_size;
+    const double u_limit
+      = displacement_problem.viscoplasticity_parameters().divergence_limit()
+        * body_size;
     AssertThrow(!quantity.empty() || measures.u_max <= u_limit,
                 ExcMessage("Step " + std::to_string(n)
                            + " (t = " + to_text(time_discretization.time(n))
@@ -309,12 +340,14 @@ namespace VPContact
                            triangulation.n_global_active_cells()));
     statistics.add_value("dofs",
                          static_cast<unsigned long long>(dof_handler.n_dofs()));
-    statistics.add_value("linear_iterations", last_linear_iterations);
+    statistics.add_value("linear_iterations",
+                         displacement_problem.linear_iterations());
     statistics.add_value("wall_time", step_wall_time);
     statistics.add_value("u_max", measures.u_max);
     statistics.add_value("von_mises_max", measures.von_mises_max);
     statistics.add_value("elastic_energy", measures.energy);
-    monitor_points.add_statistics(solution, statistics);
+    monitor_points.add_statistics(displacement_problem.ghosted_solution(),
+                                  statistics);
     return "step " + std::to_string(n) + "  t = " + format("%.6g", time)
            + "  |u|max = " + format("%.6e", measures.u_max)
            + "  von Mises max = " + format("%.6e", measures.von_mises_max)
@@ -353,8 +386,8 @@ namespace VPContact
         line,
         mpi_communicator);
     });
-    if (friction_problem)
-      step_reports.push_back(physics_report(*friction_problem));
+    if (FrictionProblem<dim> *const friction = displacement_problem.contact())
+      step_reports.push_back(physics_report(*friction));
   }
 
 
@@ -368,7 +401,7 @@ namespace VPContact
     TimerOutput::Scope t(computing_timer, "Postprocess and output");
     const double       time = time_discretization.time(n);
 
-    const StepMeasures measures = measure_step();
+    const StepMeasures measures = displacement_problem.measure_step();
     check_finite(measures, n);
     const double u_max = measures.u_max;
     // The stress of every cell, for the fields and for the scale of the
@@ -378,7 +411,7 @@ namespace VPContact
     Vector<double>              von_mises;
     std::vector<Vector<double>> components;
     if (write || verification.has_exact_stress())
-      compute_cell_stresses(von_mises, components);
+      displacement_problem.compute_cell_stresses(von_mises, components);
 
     std::string line = add_step_statistics(n, step_wall_time, measures);
     if (error_estimator.estimates_step(n, time_discretization.n_steps()))
@@ -392,7 +425,8 @@ namespace VPContact
       add_report(line, report);
     if (!output_writer.deterministic_screen_output() && n > 0)
       {
-        line += "  CG its = " + std::to_string(last_linear_iterations);
+        line += "  CG its = "
+                + std::to_string(displacement_problem.linear_iterations());
         for (const Physics *object : physics)
           line += object->iteration_counts();
         line += format("  (%.3f s)", step_wall_time);
@@ -402,70 +436,6 @@ namespace VPContact
     if (write)
       write_fields(n, von_mises, components);
     output_writer.write_statistics(statistics, mpi_communicator);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::add_verification_statistics(
-    std::string                       &line,
-    const double                       time,
-    const double                       u_max,
-    const std::vector<Vector<double>> &components)
-  {
-    // The errors against the closed forms of the Verification section.
-    if (verification.is_active())
-      {
-        const auto errors
-          = verification.compute_errors(dof_handler, solution, time, u_max);
-        // The exact solution is evaluated at every quadrature point: one
-        // NaN there makes the L2 error NaN (a maximum would pass it by).
-        AssertThrow(std::isfinite(errors.l2) && std::isfinite(errors.max_nodal),
-                    ExcMessage("Verification/Exact displacement is not finite "
-                               "(NaN or infinity) somewhere at t = "
-                               + to_text(time)
-                               + ". Check it for divisions by zero, roots "
-                                 "or logarithms of negative numbers."));
-        statistics.add_value("u_error_max_nodal", errors.max_nodal);
-        statistics.add_value("u_error_L2", errors.l2);
-        // Errors are round-off in verification scenes: printed with two
-        // digits, they differ between runs only below numdiff's absolute
-        // tolerance.
-        line += "  error: nodal max = " + format("%.2e", errors.max_nodal)
-                + ", L2 = " + format("%.2e", errors.l2);
-      }
-    if (verification.has_exact_stress())
-      {
-        const double error = stress_error(time);
-        // The scale of the stress for the relative error in the summary.
-        double stress_scale = 0;
-        for (const auto &c : components)
-          stress_scale = std::max(stress_scale, c.linfty_norm());
-        verification.record_stress_error(error,
-                                         Utilities::MPI::max(stress_scale,
-                                                             mpi_communicator));
-        AssertThrow(std::isfinite(error),
-                    ExcMessage("Verification/Exact stress is not finite (NaN "
-                               "or infinity) somewhere at t = "
-                               + to_text(time) + "."));
-        statistics.add_value("stress_error_max", error);
-        line += "  stress error = " + format("%.2e", error);
-      }
-    if (verification.has_exact_damage())
-      {
-        const double error
-          = verification.damage_error(dof_handler,
-                                      solution,
-                                      damage_problem->full_dofs(),
-                                      time);
-        AssertThrow(std::isfinite(error),
-                    ExcMessage("Verification/Exact damage is not finite (NaN "
-                               "or infinity) somewhere at t = "
-                               + to_text(time) + "."));
-        statistics.add_value("damage_error_max", error);
-        line += "  damage error = " + format("%.2e", error);
-      }
   }
 
 
@@ -494,29 +464,21 @@ namespace VPContact
           DataComponentInterpretation::component_is_scalar);
       }
     data_out.attach_dof_handler(dof_handler);
-    sources->solution
-      = ghosted_blocks(solution_owned, locally_relevant_dofs, mpi_communicator);
+    sources->solution = ghosted_blocks(displacement_problem.solution_blocks(),
+                                       locally_relevant_dofs,
+                                       mpi_communicator);
     data_out.add_data_vector(sources->solution,
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
 
     // Contact nodes: status (0 none, 1 stick, 2 slip), traction sigma_tau.
-    if (friction_problem)
-      {
-        LA::MPI::Vector status(locally_owned_dofs, mpi_communicator);
-        LA::MPI::Vector traction(locally_owned_dofs, mpi_communicator);
-        friction_problem->fill_output(status, traction);
-        LA::MPI::BlockVector blocks(solution_owned);
-        copy_into_blocks(status, blocks);
-        sources->status
-          = ghosted_blocks(blocks, locally_relevant_dofs, mpi_communicator);
-        copy_into_blocks(traction, blocks);
-        sources->traction
-          = ghosted_blocks(blocks, locally_relevant_dofs, mpi_communicator);
-        data_out.add_data_vector(sources->status, sources->status_field);
-        data_out.add_data_vector(sources->traction, sources->traction_field);
-      }
+    if (const FrictionProblem<dim> *const friction
+        = displacement_problem.contact())
+      add_contact_fields(*friction,
+                         displacement_problem.solution_blocks(),
+                         locally_relevant_dofs,
+                         *sources);
 
     add_cell_fields(*sources,
                     von_mises,

@@ -1,4 +1,4 @@
-// The simulator's mesh, degrees of freedom, constraints and sparsity.
+// The simulator's mesh and its degrees of freedom, numbered by blocks.
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/problem_data/rigid_motions.h>
@@ -22,35 +22,9 @@ namespace VPContact
       load_checkpoint_mesh();
     else
       geometry.create_mesh(triangulation);
-    boundary_conditions.check_against_mesh(
-      Geometry<dim>::boundary_ids_of(triangulation));
-    if (boundary_conditions.has_contact_boundary())
-      {
-        std::vector<double> times;
-        for (unsigned int n = 0; n <= time_discretization.n_steps(); ++n)
-          times.push_back(time_discretization.time(n));
-        const double g_max
-          = friction.check_bound(triangulation,
-                                 boundary_conditions.contact_boundary_ids(),
-                                 times);
-        // g = 0 everywhere is frictionless sliding: no active set at all.
-        if (g_max > 0)
-          {
-            friction_problem
-              = std::make_unique<FrictionProblem<dim>>(friction,
-                                                       mpi_communicator);
-            physics.push_back(friction_problem.get());
-          }
-        AssertThrow(!(friction_problem && viscoplasticity.implicit()),
-                    ExcMessage(
-                      "Viscoplasticity/Time integration = implicit is not "
-                      "combined with Tresca friction in this release (the "
-                      "friction bound is up to "
-                      + to_text(g_max)
-                      + "). Use the explicit step with a Time step within its "
-                        "stability limit, or a frictionless contact "
-                        "(Contact/Friction bound = 0)."));
-      }
+    // Tresca friction, where the scene has it, joins the physics objects.
+    if (Physics *const friction = displacement_problem.setup_contact())
+      physics.push_back(friction);
     collect_step_reports();
   }
 
@@ -61,75 +35,9 @@ namespace VPContact
   Simulator<dim>::setup_dofs()
   {
     TimerOutput::Scope t(computing_timer, "Setup");
-    // Sets of an earlier mesh (a previous refinement cycle) name degrees of
-    // freedom that no longer exist; the constraints below must not see them.
-    if (friction_problem)
-      friction_problem->clear();
     number_dofs();
     monitor_points.setup(dof_handler);
-
-    // The constraints at t = 0 have the structure of those of every step
-    // (only inhomogeneities of prescribed displacements change), so the
-    // matrix built with them serves the whole run.
-    make_constraints(0., nullptr);
-    setup_displacement_matrix();
-
-    // The contact nodes are read off the constraints without friction; the
-    // sparsity pattern of the matrix, built with those, also holds every
-    // pattern with more nodes constrained. All nodes start in the stick set.
-    // What these constraints leave free is what the body keeps once every
-    // contact node slips (check_held_while_slipping()).
-    const RigidMotionCheck<dim> rigid_motion_check(dof_handler);
-    if (friction_problem)
-      {
-        friction_problem->setup(dof_handler,
-                                constraints,
-                                boundary_conditions.contact_boundary_ids(),
-                                locally_owned_dofs,
-                                locally_relevant_dofs);
-        const auto  free  = rigid_motion_check.free_motions(constraints);
-        const auto &parts = rigid_motion_check.parts();
-        friction_problem->set_motion_free_when_all_slip(
-          free.empty()         ? std::string() :
-          parts.n_parts() == 1 ? free.front().second :
-                                 free.front().second + " of "
-                                   + parts.description(free.front().first));
-        make_constraints(0., nullptr);
-      }
-
-    // With all contact nodes in the stick set, the constraints now hold
-    // the body, and each part of its mesh, as firmly as they ever will.
-    rigid_motion_check.assert_held(
-      constraints,
-      "Hold it with a boundary of Boundary conditions/Clamped boundary ids, "
-      "Roller boundary ids or Prescribed displacement boundary ids, or with "
-      "friction on the contact boundary (Contact/Friction bound > 0).");
-
-    setup_vectors();
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::setup_vectors()
-  {
-    // The owned vectors in blocks: the linear solver works on the
-    // displacement block of the increment in place.
-    const types::global_dof_index n_u = displacement.owned.size();
-    std::vector<IndexSet>         blocks{displacement.owned};
-    if (dof_handler.n_dofs() > n_u)
-      blocks.push_back(locally_owned_dofs.get_view(n_u, dof_handler.n_dofs()));
-    displacement.rhs.reinit(displacement.owned, mpi_communicator);
-    solution_owned.reinit(blocks, mpi_communicator);
-    solution.reinit(locally_owned_dofs,
-                    locally_relevant_dofs,
-                    mpi_communicator);
-    increment_owned.reinit(blocks, mpi_communicator);
-    increment_predictor.reinit(displacement.owned, mpi_communicator);
-    increment.reinit(locally_owned_dofs,
-                     locally_relevant_dofs,
-                     mpi_communicator);
+    displacement_problem.setup_dofs();
   }
 
 
@@ -149,166 +57,8 @@ namespace VPContact
     if (fe.n_components() > dim)
       block_component[dim] = 1;
     DoFRenumbering::component_wise(dof_handler, block_component);
-    const types::global_dof_index n_u
-      = DoFTools::count_dofs_per_fe_block(dof_handler, block_component)[0];
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
-    displacement.owned    = locally_owned_dofs.get_view(0, n_u);
-    displacement.relevant = locally_relevant_dofs.get_view(0, n_u);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::setup_displacement_matrix()
-  {
-    // The sparsity pattern of the displacement block: Trilinos sends the
-    // entries of rows that other ranks own to them (as in step-32).
-    LA::SparsityPattern                  sparsity(displacement.owned,
-                                 displacement.owned,
-                                 displacement.relevant,
-                                 mpi_communicator);
-    std::vector<types::global_dof_index> u_indices;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          get_displacement_dof_indices(cell, u_indices);
-          constraints.add_entries_local_to_global(u_indices, sparsity, false);
-        }
-    sparsity.compress();
-    displacement.solver.clear(); // it refers to the matrix of the last mesh
-    displacement.matrix.reinit(sparsity);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::make_constraints(const double           time,
-                                   const LA::MPI::Vector *previous)
-  {
-    // On the displacement block only: the damage problem keeps the hanging
-    // node constraints of its own block (DamageSystem).
-    constraints.clear();
-    constraints.reinit(displacement.relevant);
-    add_displacement_hanging_nodes();
-    boundary_conditions.make_constraints(dof_handler,
-                                         constraints,
-                                         time,
-                                         previous);
-    if (friction_problem)
-      friction_problem->add_stick_constraints(constraints);
-    constraints.close();
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::add_displacement_hanging_nodes()
-  {
-    // deal.II makes them for every component; the damage's are left out.
-    // A displacement node hangs on displacement nodes only.
-    AffineConstraints<double> all(locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, all);
-    const types::global_dof_index n_u = displacement.owned.size();
-    for (const auto &line : all.get_lines())
-      if (line.index < n_u)
-        {
-          constraints.add_line(line.index);
-          constraints.add_entries(line.index, line.entries);
-        }
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::get_displacement_dof_indices(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    std::vector<types::global_dof_index>                 &indices) const
-  {
-    // Called for every cell in every step, from several threads: each
-    // thread keeps its own vector instead of allocating one per call.
-    thread_local std::vector<types::global_dof_index> all;
-    all.resize(fe.n_dofs_per_cell());
-    cell->get_dof_indices(all);
-    indices.resize(displacement.shape_functions.size());
-    for (unsigned int i = 0; i < indices.size(); ++i)
-      indices[i] = all[displacement.shape_functions[i]];
-  }
-
-
-
-  template <int dim>
-  NearNullSpace
-  Simulator<dim>::rigid_motions() const
-  {
-    // The rigid motions of the body at the displacement nodes, about the
-    // centre of its bounding box (for better conditioned vectors): dim
-    // translations and 1 (2D) or 3 (3D) rotations, for AMG's near null
-    // space.
-    NearNullSpace space;
-    space.dofs_per_node = dim;
-    std::map<types::global_dof_index, Point<dim>> support_points;
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
-    const Point<dim> centre
-      = GridTools::compute_bounding_box(triangulation).center();
-    const unsigned int n_modes = (dim == 2 ? 3 : 6);
-    space.modes.assign(n_modes,
-                       LA::MPI::Vector(displacement.owned, mpi_communicator));
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        ComponentMask mask(fe.n_components(), false);
-        mask.set(d, true);
-        for (const auto dof : DoFTools::extract_dofs(dof_handler, mask))
-          {
-            const Tensor<1, dim> x = support_points.at(dof) - centre;
-            space.modes[d](dof)    = 1.;
-            // Rotation about axis a: the velocity e_a x x, component d.
-            for (unsigned int a = 0; a < n_modes - dim; ++a)
-              {
-                const unsigned int axis = (dim == 2 ? 2 : a);
-                Tensor<1, 3>       e, y;
-                e[axis] = 1.;
-                for (unsigned int c = 0; c < dim; ++c)
-                  y[c] = x[c];
-                space.modes[dim + a](dof) = cross_product_3d(e, y)[d];
-              }
-          }
-      }
-    for (auto &mode : space.modes)
-      mode.compress(VectorOperation::insert);
-    return space;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::setup_stress_history()
-  {
-    // sigma_0 = 0 at every quadrature point of every locally owned cell;
-    // compute_initial_state() replaces it where the scene asks for elastic
-    // equilibrium. The JxW of the points are stored with them, and the
-    // shape gradients in cell_kinematics, once per mesh (see StressHistory
-    // and CellKinematics).
-    stress_history.clear();
-    FEValues<dim> fe_values(mapping, fe, quadrature, update_JxW_values);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          stress_history.initialize(cell, quadrature.size());
-          fe_values.reinit(cell);
-          stress_history.set_JxW(cell, fe_values.get_JxW_values());
-        }
-    cell_kinematics.reinit(dof_handler, quadrature, solution);
-    owned_cells.clear();
-    rhs_chunks.clear();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        owned_cells.push_back(cell);
   }
 
 

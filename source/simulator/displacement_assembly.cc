@@ -1,7 +1,7 @@
-// The simulator's assembly: the elastic stiffness matrix (once per mesh) and
-// the right-hand side of a step, which carries the stress history.
+// The displacement problem's assembly: the elastic stiffness matrix (once per
+// mesh) and the right-hand side of a step, which carries the stress history.
 #include <vpcontact/linear_algebra/linear_algebra.h>
-#include <vpcontact/simulator/simulator.h>
+#include <vpcontact/simulator/displacement_problem.h>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parallel.h>
@@ -47,8 +47,8 @@ namespace VPContact
 
 
     // Add what a cell computed for the right-hand side (a
-    // Simulator::CellRhs) to @p rhs: a plain cell's entries straight to the
-    // local storage, at the position of each degree of freedom in the
+    // DisplacementProblem::CellRhs) to @p rhs: a plain cell's entries straight
+    // to the local storage, at the position of each degree of freedom in the
     // rank's contiguous range starting at @p first_owned (what
     // distribute_local_to_global() does for them, without its lookups of
     // the constraints and of Trilinos' local index); the other cells'
@@ -82,7 +82,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::assemble_stiffness_matrix()
+  DisplacementProblem<dim>::assemble_stiffness_matrix()
   {
     TimerOutput::Scope t(computing_timer, "Assemble matrix");
 
@@ -119,7 +119,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::add_cell_loads(
+  DisplacementProblem<dim>::add_cell_loads(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const FEValues<dim>                                  &fe_values,
     FEFaceValues<dim>                                    &fe_face_values,
@@ -162,9 +162,9 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::assemble_rhs(const double time,
-                               const bool   with_viscoplastic_rate,
-                               const bool   predictor_stored)
+  DisplacementProblem<dim>::assemble_rhs(const double time,
+                                         const bool   with_viscoplastic_rate,
+                                         const bool   predictor_stored)
   {
     TimerOutput::Scope t(computing_timer, "Assemble right-hand side");
 
@@ -224,12 +224,13 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::add_plain_cells(const unsigned int  color,
-                                  const double        previous_time,
-                                  const bool          evaluate_rate,
-                                  const bool          predictor_stored,
-                                  const bool          body_force,
-                                  const double *const solution_entries)
+  DisplacementProblem<dim>::add_plain_cells(
+    const unsigned int  color,
+    const double        previous_time,
+    const bool          evaluate_rate,
+    const bool          predictor_stored,
+    const bool          body_force,
+    const double *const solution_entries)
   {
     // The chunks of one color add to no common entry: they run in any
     // threads at once. A plain cell has no constraint, so only its loads
@@ -274,11 +275,12 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::add_other_cells(const double        previous_time,
-                                  const bool          evaluate_rate,
-                                  const bool          predictor_stored,
-                                  const bool          body_force,
-                                  const double *const solution_entries)
+  DisplacementProblem<dim>::add_other_cells(
+    const double        previous_time,
+    const bool          evaluate_rate,
+    const bool          predictor_stored,
+    const bool          body_force,
+    const double *const solution_entries)
   {
     // The cells with a constrained or a ghost entry, one after the other:
     // their vectors go through the constraints.
@@ -308,7 +310,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::subtract_predictor_work(
+  DisplacementProblem<dim>::subtract_predictor_work(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     AssemblyScratch                                      &scratch) const
   {
@@ -328,7 +330,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::compute_cell_rhs(
+  DisplacementProblem<dim>::compute_cell_rhs(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const double                                          previous_time,
     const bool                                            evaluate_rate,
@@ -390,7 +392,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::add_cell_loads_and_lifts(
+  DisplacementProblem<dim>::add_cell_loads_and_lifts(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const bool                                            body_force,
     AssemblyScratch                                      &scratch,
@@ -430,7 +432,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::assemble_residual(
+  DisplacementProblem<dim>::assemble_residual(
     const std::vector<typename DoFHandler<dim>::active_cell_iterator> &cells,
     LA::MPI::Vector &residual) const
   {
@@ -479,6 +481,6 @@ namespace VPContact
 
 
 
-  template class Simulator<2>;
-  template class Simulator<3>;
+  template class DisplacementProblem<2>;
+  template class DisplacementProblem<3>;
 } // namespace VPContact

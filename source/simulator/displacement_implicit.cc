@@ -4,7 +4,7 @@
 #include <vpcontact/app/exit_agreement.h>
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
-#include <vpcontact/simulator/simulator.h>
+#include <vpcontact/simulator/displacement_problem.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -50,7 +50,7 @@ namespace VPContact
   // values they are computed from, for one pass over the cells: allocated
   // once, overwritten on every cell.
   template <int dim>
-  struct Simulator<dim>::ImplicitCellData
+  struct DisplacementProblem<dim>::ImplicitCellData
   {
     ImplicitCellData(const unsigned int dofs_per_cell,
                      const unsigned int n_fe_dofs,
@@ -78,7 +78,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::assemble_implicit_system(const double time)
+  DisplacementProblem<dim>::assemble_implicit_system(const double time)
   {
     TimerOutput::Scope t(computing_timer, "Assemble implicit system");
 
@@ -125,7 +125,7 @@ namespace VPContact
   // in damage scenes, and 1 (undamaged) elsewhere.
   template <int dim>
   void
-  Simulator<dim>::assemble_implicit_cell(
+  DisplacementProblem<dim>::assemble_implicit_cell(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const double                                          k,
     AssemblyScratch                                      &scratch,
@@ -173,7 +173,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::solve_increment_implicit(const double time)
+  DisplacementProblem<dim>::solve_increment_implicit(const double time)
   {
     // The damage source phi_{n-1} is stored at the quadrature points by the
     // explicit assembly (its right-hand side is not used here).
@@ -235,8 +235,9 @@ namespace VPContact
   // is.
   template <int dim>
   double
-  Simulator<dim>::apply_newton_correction(const double       time,
-                                          const unsigned int iteration)
+  DisplacementProblem<dim>::apply_newton_correction(
+    const double       time,
+    const unsigned int iteration)
   {
     initialize_linear_solver();
     // The correction on the displacement block, with its constraints.
@@ -263,6 +264,6 @@ namespace VPContact
 
 
 
-  template class Simulator<2>;
-  template class Simulator<3>;
+  template class DisplacementProblem<2>;
+  template class DisplacementProblem<3>;
 } // namespace VPContact

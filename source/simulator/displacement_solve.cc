@@ -5,7 +5,7 @@
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/linear_algebra/finite_values.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
-#include <vpcontact/simulator/simulator.h>
+#include <vpcontact/simulator/displacement_problem.h>
 
 #include <deal.II/base/timer.h>
 
@@ -18,7 +18,7 @@ namespace VPContact
 {
   template <int dim>
   void
-  Simulator<dim>::initialize_linear_solver()
+  DisplacementProblem<dim>::initialize_linear_solver()
   {
     TimerOutput::Scope t(computing_timer, "Build preconditioner");
     // A matrix with an infinite entry makes the factorizations fail deep
@@ -36,9 +36,9 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::solve_increment(const double time,
-                                  const bool   with_viscoplastic_rate,
-                                  const std::function<void()> &beside)
+  DisplacementProblem<dim>::solve_increment(const double time,
+                                            const bool   with_viscoplastic_rate,
+                                            const std::function<void()> &beside)
   {
     if (friction_problem)
       friction_problem->begin_step(time);
@@ -86,7 +86,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::solve_displacement()
+  DisplacementProblem<dim>::solve_displacement()
   {
     if (displacement.solver.preconditioner_outdated())
       initialize_linear_solver();
@@ -101,7 +101,8 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::solve_displacement_beside(const std::function<void()> &beside)
+  DisplacementProblem<dim>::solve_displacement_beside(
+    const std::function<void()> &beside)
   {
     // With the factors of a Cholesky factorization, the substitutions run
     // in a second thread while this one does the work beside them, and
@@ -141,7 +142,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::share_increment()
+  DisplacementProblem<dim>::share_increment()
   {
     // The solver leaves the constrained entries of the displacement block
     // as they were; they are set from the others.
@@ -153,8 +154,8 @@ namespace VPContact
 
   template <int dim>
   bool
-  Simulator<dim>::friction_sets_settled(const double       time,
-                                        const unsigned int iteration)
+  DisplacementProblem<dim>::friction_sets_settled(const double       time,
+                                                  const unsigned int iteration)
   {
     // The next stick and slip sets from the multipliers of this solve.
     // The matrix changes when a node enters or leaves the stick set (its
@@ -208,7 +209,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::report_solve_floor()
+  DisplacementProblem<dim>::report_solve_floor()
   {
     // The floor of a time step: one solve of the displacement system with
     // everything reused (matrix and preconditioner as they are, the last
@@ -246,6 +247,6 @@ namespace VPContact
 
 
 
-  template class Simulator<2>;
-  template class Simulator<3>;
+  template class DisplacementProblem<2>;
+  template class DisplacementProblem<3>;
 } // namespace VPContact

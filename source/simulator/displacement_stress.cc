@@ -1,11 +1,11 @@
-// The simulator's stress: the update sigma_n = sigma_{n-1} + k G_{n-1} +
-// E eps(du) at every quadrature point, its safeguards, and the quantities
-// derived from it for output.
+// The displacement problem's stress: the update sigma_n = sigma_{n-1} + k
+// G_{n-1} + E eps(du) at every quadrature point, its safeguards, and the
+// quantities derived from it for output.
 #include <vpcontact/app/exit_agreement.h>
 #include <vpcontact/fe/owned_constraints.h>
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/material/stress_measures.h>
-#include <vpcontact/simulator/simulator.h>
+#include <vpcontact/simulator/displacement_problem.h>
 
 #include <deal.II/base/parallel.h>
 #include <deal.II/fe/fe_values.h>
@@ -41,9 +41,10 @@ namespace VPContact
 
   template <int dim>
   double
-  Simulator<dim>::update_stress_chunk(const unsigned int  c,
-                                      const double *const increment_entries,
-                                      const double *const solution_entries)
+  DisplacementProblem<dim>::update_stress_chunk(
+    const unsigned int  c,
+    const double *const increment_entries,
+    const double *const solution_entries)
   {
     // sigma_n = sigma_{n-1} + k G_{n-1} + E eps(du) (the predictor with
     // the increment), or, with @p solution_entries, the backward Euler
@@ -109,7 +110,8 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::update_stress_ahead(const double *const increment_entries)
+  DisplacementProblem<dim>::update_stress_ahead(
+    const double *const increment_entries)
   {
     // Runs in the second thread after the substitutions, on one rank (the
     // factors solve in the background only there): no MPI function. On one
@@ -139,7 +141,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::update_stress(const unsigned int n)
+  DisplacementProblem<dim>::update_stress(const unsigned int n)
   {
     TimerOutput::Scope t(computing_timer, "Stress update");
 
@@ -198,7 +200,7 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::compute_cell_stresses(
+  DisplacementProblem<dim>::compute_cell_stresses(
     Vector<double>              &von_mises,
     std::vector<Vector<double>> &components) const
   {
@@ -230,8 +232,8 @@ namespace VPContact
 
 
   template <int dim>
-  typename Simulator<dim>::StepMeasures
-  Simulator<dim>::measure_step() const
+  StepMeasures
+  DisplacementProblem<dim>::measure_step() const
   {
     // One pass over the cells for what every step reports (see
     // measure_chunk()). The sums run over chunks of the cells in the
@@ -280,9 +282,9 @@ namespace VPContact
 
   template <int dim>
   void
-  Simulator<dim>::measure_chunk(const unsigned int  c,
-                                const double *const entries,
-                                StepSums           &sums) const
+  DisplacementProblem<dim>::measure_chunk(const unsigned int  c,
+                                          const double *const entries,
+                                          StepSums           &sums) const
   {
     // On the cells of chunk @p c:
     // - the largest von Mises stress of the cell averages of sigma (the
@@ -342,37 +344,6 @@ namespace VPContact
 
 
 
-  template <int dim>
-  double
-  Simulator<dim>::stress_error(const double time) const
-  {
-    // max over quadrature points of |sigma_h - sigma| (Frobenius norm).
-    FEValues<dim> fe_values(mapping, fe, quadrature, update_quadrature_points);
-    double        error = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          const auto history = stress_history.get_data(cell);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const double e
-                = (history[q].stress
-                   - verification.exact_stress(fe_values.quadrature_point(q),
-                                               time))
-                    .norm();
-              // std::max() would pass a NaN by: it counts as infinite.
-              error = std::max(error,
-                               std::isfinite(e) ?
-                                 e :
-                                 std::numeric_limits<double>::infinity());
-            }
-        }
-    return Utilities::MPI::max(error, mpi_communicator);
-  }
-
-
-
-  template class Simulator<2>;
-  template class Simulator<3>;
+  template class DisplacementProblem<2>;
+  template class DisplacementProblem<3>;
 } // namespace VPContact
