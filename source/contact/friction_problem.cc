@@ -60,10 +60,6 @@ namespace VPContact
                           }))
             contact_cells.push_back(cell);
         }
-    residual_assembly.reinit(locally_owned_dofs,
-                             locally_relevant_dofs,
-                             communicator,
-                             true);
     residual.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
   }
 
@@ -124,20 +120,26 @@ namespace VPContact
 
   template <int dim>
   typename FrictionActiveSet<dim>::Changes
-  FrictionProblem<dim>::update(const LA::MPI::Vector   &increment,
-                               const double             youngs_modulus,
-                               const ResidualAssembler &assemble_residual)
+  FrictionProblem<dim>::update(const LA::MPI::Vector &increment,
+                               const double           youngs_modulus,
+                               const LA::MPI::Vector &assembled_residual)
   {
     ++last_iterations;
-    residual_assembly = 0.;
-    assemble_residual(contact_cells, residual_assembly);
-    residual_assembly.compress(VectorOperation::add);
-    residual = residual_assembly;
+    residual = assembled_residual;
     return active_set.update(residual,
                              increment,
                              youngs_modulus,
                              friction.complementarity_factor(),
                              friction.direction_tolerance());
+  }
+
+
+
+  template <int dim>
+  const std::vector<typename FrictionProblem<dim>::CellIterator> &
+  FrictionProblem<dim>::residual_cells() const
+  {
+    return contact_cells;
   }
 
 

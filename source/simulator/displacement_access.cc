@@ -5,6 +5,15 @@
 namespace VPContact
 {
   template <int dim>
+  double
+  DisplacementProblem<dim>::displacement_limit() const
+  {
+    return viscoplasticity.divergence_limit() * body_size;
+  }
+
+
+
+  template <int dim>
   bool
   DisplacementProblem<dim>::implicit() const
   {

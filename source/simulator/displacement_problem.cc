@@ -96,12 +96,32 @@ namespace VPContact
 
   template <int dim>
   void
+  DisplacementProblem<dim>::measure_body()
+  {
+    // The diagonal of the body's bounding box over all ranks: the scale of
+    // displacement_limit() on this mesh.
+    const auto box   = GridTools::compute_bounding_box(triangulation);
+    Point<dim> lower = box.get_boundary_points().first,
+               upper = box.get_boundary_points().second;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = Utilities::MPI::min(lower[d], mpi_communicator);
+        upper[d] = Utilities::MPI::max(upper[d], mpi_communicator);
+      }
+    body_size = lower.distance(upper);
+  }
+
+
+
+  template <int dim>
+  void
   DisplacementProblem<dim>::setup_dofs()
   {
     // Sets of an earlier mesh (a previous refinement cycle) name degrees of
     // freedom that no longer exist; the constraints below must not see them.
     if (friction_problem)
       friction_problem->clear();
+    measure_body();
     // The displacement block [0, n_u) of the block numbering.
     std::vector<unsigned int> block_component(fe.n_components(), 0);
     if (fe.n_components() > dim)
@@ -138,6 +158,10 @@ namespace VPContact
                                  free.front().second + " of "
                                    + parts.description(free.front().first));
         make_constraints(0., nullptr);
+        contact_residual.reinit(locally_owned_dofs,
+                                locally_relevant_dofs,
+                                mpi_communicator,
+                                true);
       }
 
     // With all contact nodes in the stick set, the constraints now hold

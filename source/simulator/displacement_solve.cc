@@ -153,6 +153,20 @@ namespace VPContact
 
 
   template <int dim>
+  const LA::MPI::Vector &
+  DisplacementProblem<dim>::assemble_contact_residual()
+  {
+    // r = b - A(du) on the cells with a contact node, whose tangential part
+    // at a contact node is its friction multiplier.
+    contact_residual = 0.;
+    assemble_residual(friction_problem->residual_cells(), contact_residual);
+    contact_residual.compress(VectorOperation::add);
+    return contact_residual;
+  }
+
+
+
+  template <int dim>
   bool
   DisplacementProblem<dim>::friction_sets_settled(const double       time,
                                                   const unsigned int iteration)
@@ -161,12 +175,9 @@ namespace VPContact
     // The matrix changes when a node enters or leaves the stick set (its
     // constraints change) or, in 3D, when a slip direction turns (its slip
     // stiffness changes); then it is reassembled.
-    const auto changes
-      = friction_problem->update(increment,
-                                 material.youngs_modulus(),
-                                 [this](const auto &cells, auto &residual) {
-                                   assemble_residual(cells, residual);
-                                 });
+    const auto changes = friction_problem->update(increment,
+                                                  material.youngs_modulus(),
+                                                  assemble_contact_residual());
     if (changes.n_stick_changed > 0)
       check_held_while_slipping(time);
     if (changes.n_changed == 0)

@@ -78,18 +78,15 @@ namespace VPContact
     , discretization(geometry.simplex_cells(),
                      parsed_damage_model(damage_model, prm).is_active())
     , mesh(discretization.make_triangulation(communicator))
-    , triangulation(*mesh)
-    , fe(discretization.finite_element())
-    , quadrature(discretization.quadrature())
-    , mapping(discretization.mapping())
-    , dof_handler(triangulation)
+    , dof_handler(*mesh)
     , displacement_problem(prm, access())
   {
     initial_conditions.parse_parameters(prm);
     time_discretization.parse_parameters(prm);
     output_writer.parse_parameters(prm);
     monitor_points.parse_parameters(prm);
-    verification.parse_parameters(prm, fe.n_components());
+    verification
+      .parse_parameters(prm, discretization.finite_element().n_components());
     convergence_study.parse_parameters(prm,
                                        output_writer.directory(),
                                        time_discretization);
@@ -143,10 +140,10 @@ namespace VPContact
             pcout,
             computing_timer,
             discretization,
-            triangulation,
-            fe,
-            quadrature,
-            mapping,
+            *mesh,
+            discretization.finite_element(),
+            discretization.quadrature(),
+            discretization.mapping(),
             dof_handler,
             locally_owned_dofs,
             locally_relevant_dofs,
@@ -200,7 +197,7 @@ namespace VPContact
     if (output_writer.report_solve_floor())
       displacement_problem.report_solve_floor();
     timer.stop();
-    convergence_study.finish_cycle(triangulation,
+    convergence_study.finish_cycle(*mesh,
                                    dof_handler.n_dofs(),
                                    time_discretization,
                                    error_estimator,
@@ -224,7 +221,7 @@ namespace VPContact
     if (damage_problem)
       {
         damage_problem->setup(dof_handler,
-                              quadrature,
+                              discretization.quadrature(),
                               locally_owned_dofs,
                               locally_relevant_dofs,
                               displacement_problem.solution_blocks());
@@ -237,7 +234,7 @@ namespace VPContact
         const std::optional<ScalarNodeSpace<dim>> damage_nodes
           = (damage_problem ? std::optional(damage_problem->node_space()) :
                               std::nullopt);
-        error_estimator.setup(triangulation,
+        error_estimator.setup(*mesh,
                               displacement_problem.cells(),
                               displacement_problem.kinematics(),
                               displacement_problem.history(),

@@ -72,10 +72,12 @@ namespace VPContact
     // bytes a cell, the small files less than 64 kB.
     const std::size_t bytes_per_cell
       = sizeof(double)
-          * (n_checkpoint_vectors * fe.n_dofs_per_cell()
-             + quadrature.size() * QuadraturePointHistory<dim>::n_values)
+          * (n_checkpoint_vectors
+               * discretization.finite_element().n_dofs_per_cell()
+             + discretization.quadrature().size()
+                 * QuadraturePointHistory<dim>::n_values)
         + sizeof(unsigned int);
-    const double      n_cells = triangulation.n_global_active_cells();
+    const double      n_cells = mesh->n_global_active_cells();
     const std::string folder
       = checkpointing.start_writing(n_cells * (bytes_per_cell + 64) + 65536,
                                     mpi_communicator);
@@ -90,8 +92,8 @@ namespace VPContact
     // resumed run would then also start its loop at this cycle.
     metadata.cycle          = 0;
     metadata.n_ranks        = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    metadata.n_coarse_cells = triangulation.n_global_coarse_cells();
-    metadata.n_active_cells = triangulation.n_global_active_cells();
+    metadata.n_coarse_cells = mesh->n_global_coarse_cells();
+    metadata.n_active_cells = mesh->n_global_active_cells();
     metadata.n_dofs         = dof_handler.n_dofs();
     metadata.statistics_csv = statistics.to_csv();
     // The checkpoint lists the field outputs on disk: the last one must be.
@@ -114,7 +116,7 @@ namespace VPContact
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(
       metadata,
-      CheckpointFields::expected_sizes(checkpointed_mesh(triangulation),
+      CheckpointFields::expected_sizes(checkpointed_mesh(*mesh),
                                        "mesh",
                                        bytes_per_cell),
       mpi_communicator);
@@ -157,11 +159,11 @@ namespace VPContact
          &increments[2],
          &sets};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
-    CheckpointFields::save(checkpointed_mesh(triangulation),
+    CheckpointFields::save(checkpointed_mesh(*mesh),
                            dof_handler,
                            vectors,
                            displacement_problem.history(),
-                           quadrature.size(),
+                           discretization.quadrature().size(),
                            folder + "/mesh");
     return physics_counters;
   }
@@ -228,19 +230,18 @@ namespace VPContact
 
     // load() refines the coarse mesh as the checkpoint's was, and
     // partitions it among the ranks of this run.
-    geometry.create_coarse_mesh(triangulation);
-    AssertThrow(triangulation.n_global_coarse_cells()
+    geometry.create_coarse_mesh(*mesh);
+    AssertThrow(mesh->n_global_coarse_cells()
                   == resumed_checkpoint.n_coarse_cells,
-                ExcMessage(
-                  "The checkpoint in " + folder + " has "
-                  + std::to_string(resumed_checkpoint.n_coarse_cells)
-                  + " coarse cells, the mesh of the Geometry section "
-                    "has "
-                  + std::to_string(triangulation.n_global_coarse_cells())
-                  + ": has the mesh file changed? Resume with the "
-                    "mesh of the checkpointed run."));
-    checkpointed_mesh(triangulation).load(folder + "/mesh");
-    AssertThrow(triangulation.n_global_active_cells()
+                ExcMessage("The checkpoint in " + folder + " has "
+                           + std::to_string(resumed_checkpoint.n_coarse_cells)
+                           + " coarse cells, the mesh of the Geometry section "
+                             "has "
+                           + std::to_string(mesh->n_global_coarse_cells())
+                           + ": has the mesh file changed? Resume with the "
+                             "mesh of the checkpointed run."));
+    checkpointed_mesh(*mesh).load(folder + "/mesh");
+    AssertThrow(mesh->n_global_active_cells()
                   == resumed_checkpoint.n_active_cells,
                 ExcMessage("The mesh loaded from " + folder
                            + " does not have the number of cells the "
@@ -316,11 +317,11 @@ namespace VPContact
     const std::vector<LA::MPI::Vector *> vectors
       = {&full[0], &full[1], &full[2], &full[3], &sets_owned};
     AssertDimension(vectors.size(), n_checkpoint_vectors);
-    CheckpointFields::load(checkpointed_mesh(triangulation),
+    CheckpointFields::load(checkpointed_mesh(*mesh),
                            dof_handler,
                            vectors,
                            displacement_problem.history(),
-                           quadrature.size());
+                           discretization.quadrature().size());
     displacement_problem.restore_fields(full);
   }
 

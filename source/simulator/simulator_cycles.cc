@@ -25,19 +25,8 @@ namespace VPContact
               << " (" << convergence_study.refinement().description() << ")"
               << std::endl;
       }
-    {
-      const auto box   = GridTools::compute_bounding_box(triangulation);
-      Point<dim> lower = box.get_boundary_points().first,
-                 upper = box.get_boundary_points().second;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] = Utilities::MPI::min(lower[d], mpi_communicator);
-          upper[d] = Utilities::MPI::max(upper[d], mpi_communicator);
-        }
-      body_size = lower.distance(upper);
-    }
     time_discretization.set_halvings(
-      convergence_study.start_cycle(cycle, triangulation));
+      convergence_study.start_cycle(cycle, *mesh));
     convergence_study.check_reference_times(time_discretization);
 
     statistics = Statistics();
@@ -56,7 +45,7 @@ namespace VPContact
     // cycle starts from t = 0 and sets them up again.
     displacement_problem.history().clear();
     convergence_study.refine(
-      triangulation,
+      *mesh,
       error_estimator.cell_indicators(),
       displacement_problem.boundaries().contact_boundary_ids());
   }
@@ -78,7 +67,7 @@ namespace VPContact
     std::array<Tensor<1, dim>, V>          u;
     std::array<double, V>                  zeta;
     std::array<SymmetricTensor<2, dim>, V> sigma;
-    AssertThrow(quadrature.size() == V, ExcInternalError());
+    AssertThrow(discretization.quadrature().size() == V, ExcInternalError());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {

@@ -258,7 +258,7 @@ namespace VPContact
                 "active set" :
                 "bilateral (u.nu = 0), frictionless (friction bound 0)")
           << '\n'
-          << "  mesh: " << triangulation.n_global_active_cells() << " cells"
+          << "  mesh: " << mesh->n_global_active_cells() << " cells"
           << (discretization.simplex() ?
                 " (" + discretization.description() + ")" :
                 std::string())
@@ -291,9 +291,7 @@ namespace VPContact
     // A displacement far beyond the body's size is no longer small strain:
     // an unstable or unbounded step, stopped as the stress is (see
     // update_stress()).
-    const double u_limit
-      = displacement_problem.viscoplasticity_parameters().divergence_limit()
-        * body_size;
+    const double u_limit = displacement_problem.displacement_limit();
     AssertThrow(!quantity.empty() || measures.u_max <= u_limit,
                 ExcMessage("Step " + std::to_string(n)
                            + " (t = " + to_text(time_discretization.time(n))
@@ -337,7 +335,7 @@ namespace VPContact
     statistics.add_value("time", time);
     statistics.add_value("cells",
                          static_cast<unsigned long long>(
-                           triangulation.n_global_active_cells()));
+                           mesh->n_global_active_cells()));
     statistics.add_value("dofs",
                          static_cast<unsigned long long>(dof_handler.n_dofs()));
     statistics.add_value("linear_iterations",
@@ -483,7 +481,7 @@ namespace VPContact
     add_cell_fields(*sources,
                     von_mises,
                     components,
-                    triangulation.locally_owned_subdomain());
+                    mesh->locally_owned_subdomain());
     FieldPatches<dim> fields;
     fields.names         = data_out.field_names();
     fields.vector_ranges = data_out.vector_ranges();

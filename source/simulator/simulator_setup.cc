@@ -21,7 +21,7 @@ namespace VPContact
     if (checkpointing.resume())
       load_checkpoint_mesh();
     else
-      geometry.create_mesh(triangulation);
+      geometry.create_mesh(*mesh);
     // Tresca friction, where the scene has it, joins the physics objects.
     if (Physics *const friction = displacement_problem.setup_contact())
       physics.push_back(friction);
@@ -46,15 +46,17 @@ namespace VPContact
   void
   Simulator<dim>::number_dofs()
   {
-    dof_handler.distribute_dofs(fe);
+    dof_handler.distribute_dofs(discretization.finite_element());
     // Numbered by blocks, as in step-32 and step-55: all displacement
     // degrees of freedom first, node by node, then all damage ones. On each
     // rank the owned ones of each block are then a contiguous range, and in
     // the local entries of a vector on all of them the displacement comes
     // first: the displacement system is the block [0, n_u) alone, and the
     // damage system the block [n_u, n).
-    std::vector<unsigned int> block_component(fe.n_components(), 0);
-    if (fe.n_components() > dim)
+    std::vector<unsigned int> block_component(
+      discretization.finite_element().n_components(),
+      0);
+    if (discretization.finite_element().n_components() > dim)
       block_component[dim] = 1;
     DoFRenumbering::component_wise(dof_handler, block_component);
     locally_owned_dofs = dof_handler.locally_owned_dofs();

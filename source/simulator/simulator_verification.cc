@@ -97,7 +97,10 @@ namespace VPContact
   Simulator<dim>::stress_error(const double time) const
   {
     // max over quadrature points of |sigma_h - sigma| (Frobenius norm).
-    FEValues<dim> fe_values(mapping, fe, quadrature, update_quadrature_points);
+    FEValues<dim> fe_values(discretization.mapping(),
+                            discretization.finite_element(),
+                            discretization.quadrature(),
+                            update_quadrature_points);
     double        error = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())

@@ -30,19 +30,15 @@ namespace VPContact
    * slip sets (FrictionActiveSet), the cells that hold a contact node (where
    * the residual r = b - A(du) is assembled: its tangential part at a
    * contact node is the friction multiplier), and the iteration counts and
-   * violations a run reports. The simulator owns the displacement problem
-   * and calls begin_step(), then, after each solve, update() until no node
-   * changes set.
+   * violations a run reports. The DisplacementProblem owns it: it calls
+   * begin_step(), then, after each solve, assembles the residual on
+   * residual_cells() and calls update() until no node changes set.
    */
   template <int dim>
   class FrictionProblem : public Physics
   {
   public:
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
-    /// Assembles r on the given cells into the vector (with ghost entries).
-    using ResidualAssembler
-      = std::function<void(const std::vector<CellIterator> &,
-                           LA::MPI::Vector &)>;
 
     FrictionProblem(const TrescaFriction<dim> &friction,
                     const MPI_Comm             communicator);
@@ -86,14 +82,21 @@ namespace VPContact
     update_slip_stiffness(const AffineConstraints<double> &constraints,
                           LA::SparseMatrix                &matrix);
 
+    /// The locally owned cells with a contact node: where update() needs
+    /// the residual.
+    const std::vector<CellIterator> &
+    residual_cells() const;
+
     /**
-     * One active-set iteration after a solve: the residual by
-     * @p assemble_residual, the multipliers, the next sets.
+     * One active-set iteration after a solve: the multipliers from the
+     * residual r = b - A(du), which @p assembled_residual holds on the
+     * contact nodes (assembled on residual_cells() and compressed), and the
+     * next sets.
      */
     typename FrictionActiveSet<dim>::Changes
-    update(const LA::MPI::Vector   &increment,
-           const double             youngs_modulus,
-           const ResidualAssembler &assemble_residual);
+    update(const LA::MPI::Vector &increment,
+           const double           youngs_modulus,
+           const LA::MPI::Vector &assembled_residual);
 
     /**
      * Record what the constraints without any stick node leave free (a
@@ -161,8 +164,7 @@ namespace VPContact
     FrictionActiveSet<dim>     active_set;
     /// The locally owned cells with a contact node, where r is assembled.
     std::vector<CellIterator> contact_cells;
-    /// r as assembled (with ghost entries), and a ghosted copy.
-    LA::MPI::Vector residual_assembly;
+    /// A ghosted copy of r.
     LA::MPI::Vector residual;
     unsigned int    last_iterations   = 0;
     double          largest_violation = 0;

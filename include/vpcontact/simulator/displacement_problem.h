@@ -160,6 +160,11 @@ namespace VPContact
     StepMeasures
     measure_step() const;
 
+    /// The largest |u| a sound run reaches: Viscoplasticity/Divergence
+    /// limit times the diagonal of the body's bounding box.
+    double
+    displacement_limit() const;
+
     /// Whether the viscoplastic step is backward Euler.
     bool
     implicit() const;
@@ -303,6 +308,8 @@ namespace VPContact
     share_increment();
     bool
     friction_sets_settled(const double time, const unsigned int iteration);
+    const LA::MPI::Vector &
+    assemble_contact_residual();
 
     /// The right-hand side at @p time. With @p predictor_stored the
     /// predictor and the damage source at the points are those a pass of
@@ -401,6 +408,8 @@ namespace VPContact
     void
     check_held_while_slipping(const double time) const;
     void
+    measure_body();
+    void
     setup_displacement_matrix();
     void
     add_displacement_hanging_nodes();
@@ -474,6 +483,12 @@ namespace VPContact
     /// stress component of every chunk (see update_stress()).
     WorkAhead           stress_ahead;
     std::vector<double> stress_chunk_largest;
+
+    /// The diagonal of the body's bounding box (displacement_limit()).
+    double body_size = 0;
+    /// r = b - A(du) on the contact cells, as assembled (with ghost
+    /// entries), for the friction multipliers.
+    LA::MPI::Vector contact_residual;
 
     unsigned int last_linear_iterations = 0;
   };

@@ -212,10 +212,7 @@ namespace VPContact
     MonitorPoints<dim>    monitor_points;
     ConvergenceStudy<dim> convergence_study;
     ErrorEstimator<dim>   error_estimator;
-    /// The diagonal of the body's bounding box, the scale of the
-    /// displacement safeguard in check_finite().
-    double        body_size = 0;
-    Checkpointing checkpointing;
+    Checkpointing         checkpointing;
     /// The checkpoint a resumed run reads (found by load_checkpoint_mesh()).
     CheckpointMetadata resumed_checkpoint;
 
@@ -224,16 +221,9 @@ namespace VPContact
     /// A p4est mesh of quadrilaterals (hexahedra), or a METIS-partitioned
     /// shared mesh of triangles (tetrahedra).
     const std::unique_ptr<parallel::TriangulationBase<dim>> mesh;
-    parallel::TriangulationBase<dim>                       &triangulation;
-    /// The displacement, and a damage component in damage scenes only.
-    const FESystem<dim> &fe;
-    /// The rule of assembly, stress storage and stress output alike.
-    const Quadrature<dim> &quadrature;
-    /// The linear mapping of the cells (MappingQ1 or MappingFE).
-    const Mapping<dim> &mapping;
-    DoFHandler<dim>     dof_handler;
-    IndexSet            locally_owned_dofs;
-    IndexSet            locally_relevant_dofs;
+    DoFHandler<dim>                                         dof_handler;
+    IndexSet                                                locally_owned_dofs;
+    IndexSet locally_relevant_dofs;
     /// Steps 1-3: the displacement, the stress and Tresca friction.
     DisplacementProblem<dim> displacement_problem;
     /// The damage problem, step 4 (damage scenes only).
