@@ -284,6 +284,38 @@ namespace VPContact
 
   template <int dim>
   void
+  DamageProblem<dim>::setup_on_mesh(const SimulatorAccess<dim> &simulator,
+                                    LA::MPI::BlockVector       &solution_owned)
+  {
+    setup(simulator.dof_handler,
+          simulator.quadrature,
+          simulator.locally_owned_dofs,
+          simulator.locally_relevant_dofs,
+          solution_owned);
+  }
+
+
+
+  template <int dim>
+  bool
+  DamageProblem<dim>::solves_in_step() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  DamageProblem<dim>::reports_before_errors() const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
   DamageProblem<dim>::interpolate_initial_damage(
     LA::MPI::BlockVector &solution_owned)
   {

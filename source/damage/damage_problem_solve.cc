@@ -16,9 +16,9 @@ namespace VPContact
 {
   template <int dim>
   void
-  DamageProblem<dim>::solve(const unsigned int          n,
-                            const LA::MPI::BlockVector &solution_owned,
-                            const StressHistory<dim>   &history)
+  DamageProblem<dim>::solve_step(const unsigned int          n,
+                                 const LA::MPI::BlockVector &solution_owned,
+                                 const StressHistory<dim>   &history)
   {
     // zeta_{n-1} from the solution and the load b of this step. A source
     // that evaluates to NaN or infinity anywhere spoils the whole load; say
@@ -294,7 +294,7 @@ namespace VPContact
 
 
   template <int dim>
-  ScalarNodeSpace<dim>
+  std::optional<ScalarNodeSpace<dim>>
   DamageProblem<dim>::node_space() const
   {
     ScalarNodeSpace<dim> space;

@@ -140,6 +140,20 @@ namespace VPContact
 
 
   template <int dim>
+  std::string
+  DisplacementProblem<dim>::contact_description() const
+  {
+    return !boundary_conditions.has_contact_boundary() ?
+             "none" :
+           friction_problem ?
+             "bilateral (u.nu = 0) with Tresca friction, primal-dual "
+             "active set" :
+             "bilateral (u.nu = 0), frictionless (friction bound 0)";
+  }
+
+
+
+  template <int dim>
   const FrictionProblem<dim> *
   DisplacementProblem<dim>::contact() const
   {

@@ -61,7 +61,7 @@ namespace VPContact
 
 
   template <int dim>
-  Physics *
+  Physics<dim> *
   DisplacementProblem<dim>::setup_contact()
   {
     boundary_conditions.check_against_mesh(

@@ -5,7 +5,9 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 
+#include <algorithm>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -218,28 +220,23 @@ namespace VPContact
     start_cycle(cycle);
     setup_dofs();
     displacement_problem.setup_stress_history();
-    if (damage_problem)
+    // The estimate recovers its fields on a physics object's scalar node
+    // space (the damage block) where there is one, else on a space of its
+    // own.
+    std::optional<ScalarNodeSpace<dim>> nodes;
+    for (Physics<dim> *object : physics)
       {
-        damage_problem->setup(dof_handler,
-                              discretization.quadrature(),
-                              locally_owned_dofs,
-                              locally_relevant_dofs,
-                              displacement_problem.solution_blocks());
-        displacement_problem.update_ghosted_solution();
+        object->setup_on_mesh(access(), displacement_problem.solution_blocks());
+        if (!nodes)
+          nodes = object->node_space();
       }
-    // The estimate recovers its fields on the damage block where there is
-    // one, else on a scalar space of its own.
+    displacement_problem.update_ghosted_solution();
     if (error_estimator.is_active())
-      {
-        const std::optional<ScalarNodeSpace<dim>> damage_nodes
-          = (damage_problem ? std::optional(damage_problem->node_space()) :
-                              std::nullopt);
-        error_estimator.setup(*mesh,
-                              displacement_problem.cells(),
-                              displacement_problem.kinematics(),
-                              displacement_problem.history(),
-                              damage_nodes ? &*damage_nodes : nullptr);
-      }
+      error_estimator.setup(*mesh,
+                            displacement_problem.cells(),
+                            displacement_problem.kinematics(),
+                            displacement_problem.history(),
+                            nodes ? &*nodes : nullptr);
     // A resumed run takes the state of its checkpoint's step and continues
     // after it (simulator_checkpoint.cc).
     const unsigned int first_step
@@ -372,30 +369,36 @@ namespace VPContact
     // may meanwhile write the new stress at the points
     // (update_stress_ahead()), which the damage step does not read. The
     // implicit scheme's Newton iterations keep the order of the steps.
-    const std::function<void()> damage_step = [this, n]() {
-      damage_problem->solve(n,
-                            displacement_problem.solution_blocks(),
-                            displacement_problem.history());
+    std::vector<Physics<dim> *> stepping;
+    std::copy_if(physics.begin(),
+                 physics.end(),
+                 std::back_inserter(stepping),
+                 [](const Physics<dim> *object) {
+                   return object->solves_in_step();
+                 });
+    const std::function<void()> step = [this, n, &stepping]() {
+      for (Physics<dim> *object : stepping)
+        object->solve_step(n,
+                           displacement_problem.solution_blocks(),
+                           displacement_problem.history());
     };
     if (displacement_problem.implicit())
       {
         displacement_problem.solve_increment_implicit(
           time_discretization.time(n));
-        if (damage_problem)
-          damage_step();
+        step();
       }
     else
       displacement_problem.solve_increment(time_discretization.time(n),
                                            true,
-                                           damage_problem ?
-                                             damage_step :
-                                             std::function<void()>());
+                                           stepping.empty() ?
+                                             std::function<void()>() :
+                                             step);
     displacement_problem.update_stress(n);
-    if (damage_problem)
-      {
-        damage_problem->store(n, displacement_problem.solution_blocks());
-        displacement_problem.update_ghosted_solution();
-      }
+    for (Physics<dim> *object : stepping)
+      object->store(n, displacement_problem.solution_blocks());
+    if (!stepping.empty())
+      displacement_problem.update_ghosted_solution();
   }
 
 

@@ -144,7 +144,7 @@ namespace VPContact
                                                     0.},
                                                    {"max_damage_violation", 0.},
                                                    {"damage_rings_ahead", 0.}};
-    for (const Physics *object : physics)
+    for (const Physics<dim> *object : physics)
       object->write_checkpoint(sets_owned, physics_counters);
     LA::MPI::Vector sets(locally_owned_dofs,
                          locally_relevant_dofs,
@@ -282,7 +282,7 @@ namespace VPContact
     // A state that does not fit the nodes is found by the ranks that own
     // them: all ranks stop together (each read calls collective functions,
     // so each is a step of its own).
-    for (Physics *object : physics)
+    for (Physics<dim> *object : physics)
       stop_together(mpi_communicator, [&]() {
         object->read_checkpoint(sets_owned, sets, counter);
       });

@@ -250,14 +250,7 @@ namespace VPContact
           << "  damage: " << damage_model.description() << '\n'
           << "  boundary: " << displacement_problem.boundaries().summary()
           << '\n'
-          << "  contact: "
-          << (!displacement_problem.boundaries().has_contact_boundary() ?
-                "none" :
-              displacement_problem.contact() ?
-                "bilateral (u.nu = 0) with Tresca friction, primal-dual "
-                "active set" :
-                "bilateral (u.nu = 0), frictionless (friction bound 0)")
-          << '\n'
+          << "  contact: " << displacement_problem.contact_description() << '\n'
           << "  mesh: " << mesh->n_global_active_cells() << " cells"
           << (discretization.simplex() ?
                 " (" + discretization.description() + ")" :
@@ -358,16 +351,19 @@ namespace VPContact
   void
   Simulator<dim>::collect_step_reports()
   {
-    // The damage columns come first, the friction columns last, as in the
-    // tables of earlier runs that users compare with.
-    const auto physics_report = [this](Physics &object) {
-      return [this, &object](std::string &line, const StepReport &report) {
-        object.add_statistics(statistics, line, report.quantities);
-      };
+    // The columns of the physics objects that report before the errors
+    // (damage) come first, the others (friction) last, as in the tables of
+    // earlier runs that users compare with.
+    const auto add_physics_reports = [this](const bool before_errors) {
+      for (Physics<dim> *object : physics)
+        if (object->reports_before_errors() == before_errors)
+          step_reports.push_back(
+            [this, object](std::string &line, const StepReport &report) {
+              object->add_statistics(statistics, line, report.quantities);
+            });
     };
     step_reports.clear();
-    if (damage_problem)
-      step_reports.push_back(physics_report(*damage_problem));
+    add_physics_reports(true);
     step_reports.push_back([this](std::string &line, const StepReport &report) {
       add_verification_statistics(line,
                                   report.time,
@@ -384,8 +380,7 @@ namespace VPContact
         line,
         mpi_communicator);
     });
-    if (FrictionProblem<dim> *const friction = displacement_problem.contact())
-      step_reports.push_back(physics_report(*friction));
+    add_physics_reports(false);
   }
 
 
@@ -425,7 +420,7 @@ namespace VPContact
       {
         line += "  CG its = "
                 + std::to_string(displacement_problem.linear_iterations());
-        for (const Physics *object : physics)
+        for (const Physics<dim> *object : physics)
           line += object->iteration_counts();
         line += format("  (%.3f s)", step_wall_time);
       }
@@ -515,7 +510,7 @@ namespace VPContact
           pcout << " in " << format("%.3g", wall_time) << " s of run time";
         pcout << '\n';
       }
-    for (const Physics *object : physics)
+    for (const Physics<dim> *object : physics)
       pcout << object->violation_summary();
     pcout << "Run complete: " << time_discretization.n_steps()
           << " steps; statistics in "

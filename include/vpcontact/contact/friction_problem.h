@@ -35,7 +35,7 @@ namespace VPContact
    * residual_cells() and calls update() until no node changes set.
    */
   template <int dim>
-  class FrictionProblem : public Physics
+  class FrictionProblem : public Physics<dim>
   {
   public:
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;

@@ -50,7 +50,7 @@ namespace VPContact
    * checkpoints).
    */
   template <int dim>
-  class DamageProblem : public Physics
+  class DamageProblem : public Physics<dim>
   {
   public:
     /// The entries of the damage solvers (DamageSystem, section Solver).
@@ -79,20 +79,33 @@ namespace VPContact
           const IndexSet        &locally_relevant_dofs,
           LA::MPI::BlockVector  &solution_owned);
 
+    /// setup() on the simulator's mesh, element and degrees of freedom.
+    void
+    setup_on_mesh(const SimulatorAccess<dim> &simulator,
+                  LA::MPI::BlockVector       &solution_owned) override;
+
+    /// True: the damage step of every step.
+    bool
+    solves_in_step() const override;
+
+    /// True: the damage columns lead the step's statistics.
+    bool
+    reports_before_errors() const override;
+
     /**
      * Step 4 of step @p n: zeta_n from zeta_{n-1} (the damage block of
      * @p solution_owned) and the source phi_{n-1} stored in @p history.
      * zeta_n stays here until store().
      */
     void
-    solve(const unsigned int          n,
-          const LA::MPI::BlockVector &solution_owned,
-          const StressHistory<dim>   &history);
+    solve_step(const unsigned int          n,
+               const LA::MPI::BlockVector &solution_owned,
+               const StressHistory<dim>   &history) override;
 
     /// zeta_n clipped onto [0, 1] (by the solver tolerance) into the
     /// damage block of @p solution_owned.
     void
-    store(const unsigned int n, LA::MPI::BlockVector &solution_owned);
+    store(const unsigned int n, LA::MPI::BlockVector &solution_owned) override;
 
     /// The step's damage columns of @p statistics (the damaged volume
     /// fraction from @p quantities) and its part of the screen @p line.
@@ -116,8 +129,8 @@ namespace VPContact
 
     /// The damage block as a scalar node space (for the error estimate's
     /// recovery), valid until the next setup().
-    ScalarNodeSpace<dim>
-    node_space() const;
+    std::optional<ScalarNodeSpace<dim>>
+    node_space() const override;
 
     /// The active sets into the damage entries of @p sets_owned (on all
     /// degrees of freedom), and the counters a resumed run needs.

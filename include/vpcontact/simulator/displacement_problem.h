@@ -106,7 +106,7 @@ namespace VPContact
      * Returns the FrictionProblem, or nullptr, for the simulator's list of
      * physics objects.
      */
-    Physics *
+    Physics<dim> *
     setup_contact();
 
     /// On new degrees of freedom: constraints, the matrix's sparsity, the
@@ -202,6 +202,9 @@ namespace VPContact
     law() const;
     const BoundaryConditions<dim> &
     boundaries() const;
+    /// The contact condition in words, for the run's header.
+    std::string
+    contact_description() const;
     /// The friction problem, or nullptr where the scene has none.
     const FrictionProblem<dim> *
     contact() const;

@@ -1,15 +1,20 @@
 // The interface the simulator speaks to its optional physics (the damage
-// problem, the friction problem): statistics, the run's summary and the
+// problem, the friction problem): setup on a mesh, a step's work, the
+// recovery space they offer, statistics, the run's summary and the
 // checkpointed state, so that the simulator loops over them instead of
 // testing for each.
 #ifndef vpcontact_physics_h
 #define vpcontact_physics_h
 
+#include <vpcontact/fe/quadrature_history.h>
+#include <vpcontact/fe/scalar_node_space.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/postprocess/statistics.h>
+#include <vpcontact/simulator/simulator_access.h>
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace VPContact
@@ -27,16 +32,57 @@ namespace VPContact
   /**
    * A physics object the simulator builds only when a scene needs it (as
    * ASPECT gives optional physics a handler and Lethe an AuxiliaryPhysics):
-   * it owns its unknowns, sets, statistics and checkpointed state. How it
-   * takes part in a step differs (the damage step runs beside the first
-   * displacement solve, the friction iteration around every solve) and is
-   * called by name; what every such object does at the end of a step, at the
-   * end of a run and at a checkpoint is here.
+   * it owns its unknowns, sets, statistics and checkpointed state. The
+   * simulator calls every object it built through this interface: on a new
+   * mesh, in a step, at its end, at the end of a run and at a checkpoint.
+   * An object that has no part in one of these keeps the default, which
+   * does nothing. (The friction problem takes part in the displacement
+   * problem's solves, which own it and call it there.)
    */
+  template <int dim>
   class Physics
   {
   public:
     virtual ~Physics() = default;
+
+    /// On a new mesh of @p simulator, after the displacement problem's
+    /// setup: the object's own setup, and its block of u_0 in
+    /// @p solution.
+    virtual void
+    setup_on_mesh(const SimulatorAccess<dim> &simulator,
+                  LA::MPI::BlockVector       &solution);
+
+    /// The scalar node space of the object's unknowns, if it has one: the
+    /// error estimate recovers its fields there.
+    virtual std::optional<ScalarNodeSpace<dim>>
+    node_space() const;
+
+    /// Whether solve_step() has work (then the simulator runs it beside
+    /// the first displacement solve of the step).
+    virtual bool
+    solves_in_step() const;
+
+    /**
+     * The object's unknowns of step @p n from the data of step n - 1 only:
+     * its block of @p solution (u_{n-1}) and what the assembly stored in
+     * @p history. They stay in the object until store(), since the stress
+     * update still reads step n - 1's.
+     */
+    virtual void
+    solve_step(const unsigned int          n,
+               const LA::MPI::BlockVector &solution,
+               const StressHistory<dim>   &history);
+
+    /// After the stress update of step @p n: the object's unknowns into
+    /// its block of @p solution.
+    virtual void
+    store(const unsigned int n, LA::MPI::BlockVector &solution);
+
+    /// Whether the object's columns of statistics.csv come before those of
+    /// the errors against exact and reference solutions (the damage's do,
+    /// the friction's come last).
+    virtual bool
+    reports_before_errors() const;
 
     /// The step's columns of @p statistics and its part of the screen
     /// @p line.

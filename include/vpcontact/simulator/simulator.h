@@ -231,7 +231,7 @@ namespace VPContact
     /// The physics objects this scene has (damage, friction): the
     /// simulator reports and checkpoints them through this list instead of
     /// testing for each.
-    std::vector<Physics *> physics;
+    std::vector<Physics<dim> *> physics;
     /// What adds to a step's statistics row and screen line, in the order
     /// of the columns: the physics objects and the comparisons with exact
     /// and reference solutions (collect_step_reports()).
