@@ -12,6 +12,7 @@
 #include <boost/crc.hpp>
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
+#include <cctype>
 #include <cstdio>
 #include <fcntl.h>
 #include <filesystem>
@@ -197,6 +198,7 @@ namespace VPContact
           const std::string name = entry.path().filename().string();
           if (entry.is_regular_file() && name != CheckpointManifest::filename
               && name.find(".tmp") == std::string::npos
+              && name.find(".locktest.") == std::string::npos
               && (CheckpointManifest::is_checkpoint_file(name)
                   || expected_sizes.count(name) > 0))
             names.push_back(name);
@@ -381,6 +383,22 @@ namespace VPContact
 
 
     bool
+    is_lock_test_file(const std::string &name, const std::string &file)
+    {
+      // Open MPI's MPI-IO tests file locking on a file it writes through a
+      // file <file>.locktest.<rank> beside it, which it removes again; a
+      // run killed meanwhile leaves it.
+      const std::string prefix = file + ".locktest.";
+      return name.size() > prefix.size()
+             && name.compare(0, prefix.size(), prefix) == 0
+             && std::all_of(name.begin() + prefix.size(),
+                            name.end(),
+                            [](const char c) { return std::isdigit(c); });
+    }
+
+
+
+    bool
     is_checkpoint_file(const std::string &name)
     {
       for (const std::string &own : {std::string("mesh"),
@@ -390,7 +408,7 @@ namespace VPContact
                                      std::string("checkpoint.json"),
                                      filename,
                                      marker})
-        if (name == own || name == own + ".tmp")
+        if (name == own || name == own + ".tmp" || is_lock_test_file(name, own))
           return true;
       return false;
     }

@@ -87,12 +87,19 @@ namespace VPContact
     /**
      * Whether @p name is a file that a checkpoint of the simulator writes:
      * the mesh and its cell data (CheckpointFields::save() with the name
-     * "mesh"), checkpoint.json, the manifest and the marker, and the
-     * temporary files they are written through. A checkpoint folder holds
-     * nothing else, except files that its manifest lists.
+     * "mesh"), checkpoint.json, the manifest and the marker, the
+     * temporary files they are written through, and the lock-test files
+     * that MPI-IO writes beside them (is_lock_test_file()). A checkpoint
+     * folder holds nothing else, except files that its manifest lists.
      */
     bool
     is_checkpoint_file(const std::string &name);
+
+    /// Whether @p name is a file <file>.locktest.<rank> that Open MPI's
+    /// MPI-IO writes beside @p file to test its locks, and leaves when the
+    /// run is killed meanwhile.
+    bool
+    is_lock_test_file(const std::string &name, const std::string &file);
 
     /**
      * The entries of @p folder that a checkpoint did not write: neither
