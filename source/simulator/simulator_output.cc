@@ -217,13 +217,6 @@ namespace VPContact
 
 
 
-    std::string
-    format(const char *pattern, const double value)
-    {
-      char buffer[64];
-      std::snprintf(buffer, sizeof(buffer), pattern, value);
-      return buffer;
-    }
   } // namespace
 
 
@@ -339,10 +332,10 @@ namespace VPContact
     statistics.add_value("elastic_energy", measures.energy);
     monitor_points.add_statistics(displacement_problem.ghosted_solution(),
                                   statistics);
-    return "step " + std::to_string(n) + "  t = " + format("%.6g", time)
-           + "  |u|max = " + format("%.6e", measures.u_max)
-           + "  von Mises max = " + format("%.6e", measures.von_mises_max)
-           + "  energy = " + format("%.6e", measures.energy);
+    return "step " + std::to_string(n) + "  t = " + printf_text("%.6g", time)
+           + "  |u|max = " + printf_text("%.6e", measures.u_max)
+           + "  von Mises max = " + printf_text("%.6e", measures.von_mises_max)
+           + "  energy = " + printf_text("%.6e", measures.energy);
   }
 
 
@@ -422,7 +415,7 @@ namespace VPContact
                 + std::to_string(displacement_problem.linear_iterations());
         for (const Physics<dim> *object : physics)
           line += object->iteration_counts();
-        line += format("  (%.3f s)", step_wall_time);
+        line += printf_text("  (%.3f s)", step_wall_time);
       }
     pcout << line << std::endl;
 
@@ -503,11 +496,11 @@ namespace VPContact
         // what it cost.
         const ErrorEstimate largest = error_estimator.largest();
         pcout << "Estimated error (Theorem 2's norm, largest over the steps): "
-              << format("%.3e", largest.sum()) << " (space "
-              << format("%.3e", largest.space) << ", time "
-              << format("%.3e", largest.time) << ")";
+              << printf_text("%.3e", largest.sum()) << " (space "
+              << printf_text("%.3e", largest.space) << ", time "
+              << printf_text("%.3e", largest.time) << ")";
         if (!output_writer.deterministic_screen_output())
-          pcout << " in " << format("%.3g", wall_time) << " s of run time";
+          pcout << " in " << printf_text("%.3g", wall_time) << " s of run time";
         pcout << '\n';
       }
     for (const Physics<dim> *object : physics)

@@ -12,19 +12,6 @@
 
 namespace VPContact
 {
-  namespace
-  {
-    std::string
-    format(const char *pattern, const double value)
-    {
-      char buffer[64];
-      std::snprintf(buffer, sizeof(buffer), pattern, value);
-      return buffer;
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
   Simulator<dim>::add_verification_statistics(
@@ -54,8 +41,8 @@ namespace VPContact
         // Errors are round-off in verification scenes: printed with two
         // digits, they differ between runs only below numdiff's absolute
         // tolerance.
-        line += "  error: nodal max = " + format("%.2e", errors.max_nodal)
-                + ", L2 = " + format("%.2e", errors.l2);
+        line += "  error: nodal max = " + printf_text("%.2e", errors.max_nodal)
+                + ", L2 = " + printf_text("%.2e", errors.l2);
       }
     if (verification.has_exact_stress())
       {
@@ -72,7 +59,7 @@ namespace VPContact
                                "or infinity) somewhere at t = "
                                + to_text(time) + "."));
         statistics.add_value("stress_error_max", error);
-        line += "  stress error = " + format("%.2e", error);
+        line += "  stress error = " + printf_text("%.2e", error);
       }
     if (verification.has_exact_damage())
       {
@@ -86,7 +73,7 @@ namespace VPContact
                                "or infinity) somewhere at t = "
                                + to_text(time) + "."));
         statistics.add_value("damage_error_max", error);
-        line += "  damage error = " + format("%.2e", error);
+        line += "  damage error = " + printf_text("%.2e", error);
       }
   }
 

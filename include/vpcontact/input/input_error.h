@@ -5,6 +5,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <cstdio>
 #include <exception>
 #include <sstream>
 #include <string>
@@ -23,6 +24,16 @@ namespace VPContact
     s.precision(12);
     s << value;
     return s.str();
+  }
+
+  /// @p value printed by the printf @p pattern of one double, as the
+  /// screen lines print their figures.
+  inline std::string
+  printf_text(const char *pattern, const double value)
+  {
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), pattern, value);
+    return buffer;
   }
 
   /**
