@@ -3,11 +3,81 @@
 #include <vpcontact/contact/friction_problem.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
+#include <deal.II/numerics/data_postprocessor.h>
+
 #include <algorithm>
 #include <cstdio>
 
 namespace VPContact
 {
+  namespace
+  {
+    // The x component of the contact status vector as the scalar field
+    // contact_status (the others are unused).
+    template <int dim>
+    class ContactStatusField : public DataPostprocessorScalar<dim>
+    {
+    public:
+      ContactStatusField()
+        : DataPostprocessorScalar<dim>("contact_status", update_values)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>>                &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          computed[q](0) = inputs.solution_values[q](0);
+      }
+    };
+
+    // The tangential traction of the contact nodes in the displacement
+    // components of a vector (FrictionActiveSet::fill_output()): in 2D the
+    // scalar sigma_tau along the node's tangent, in the x component; in 3D
+    // the vector sigma_tau.
+    template <int dim>
+    class TractionField : public DataPostprocessor<dim>
+    {
+    public:
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>>                &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          for (unsigned int c = 0; c < computed[q].size(); ++c)
+            computed[q](c) = inputs.solution_values[q](c);
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return std::vector<std::string>(dim == 2 ? 1 : dim,
+                                        "tangential_traction");
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        return std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>(
+          dim == 2 ? 1 : dim,
+          dim == 2 ? DataComponentInterpretation::component_is_scalar :
+                     DataComponentInterpretation::component_is_part_of_vector);
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values;
+      }
+    };
+
+  } // namespace
+
+
+
   template <int dim>
   FrictionProblem<dim>::FrictionProblem(const TrescaFriction<dim> &friction,
                                         const MPI_Comm             communicator)
@@ -247,11 +317,19 @@ namespace VPContact
 
 
   template <int dim>
-  void
-  FrictionProblem<dim>::fill_output(LA::MPI::Vector &status,
-                                    LA::MPI::Vector &traction) const
+  std::vector<NodalField<dim>>
+  FrictionProblem<dim>::output_fields(const IndexSet &owned_dofs) const
   {
-    active_set.fill_output(status, traction);
+    // Status (0 none, 1 stick, 2 slip) and tangential traction sigma_tau of
+    // the contact nodes, in the displacement entries of a vector on every
+    // degree of freedom.
+    std::vector<NodalField<dim>> fields(2);
+    fields[0].values.reinit(owned_dofs, communicator);
+    fields[1].values.reinit(owned_dofs, communicator);
+    active_set.fill_output(fields[0].values, fields[1].values);
+    fields[0].postprocessor = std::make_shared<ContactStatusField<dim>>();
+    fields[1].postprocessor = std::make_shared<TractionField<dim>>();
+    return fields;
   }
 
 

@@ -315,6 +315,15 @@ namespace VPContact
 
 
   template <int dim>
+  std::vector<std::string>
+  DamageProblem<dim>::solution_field_names() const
+  {
+    return {"damage"};
+  }
+
+
+
+  template <int dim>
   void
   DamageProblem<dim>::interpolate_initial_damage(
     LA::MPI::BlockVector &solution_owned)

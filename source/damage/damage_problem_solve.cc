@@ -285,15 +285,6 @@ namespace VPContact
 
 
   template <int dim>
-  const IndexSet &
-  DamageProblem<dim>::full_dofs() const
-  {
-    return system.full_dofs();
-  }
-
-
-
-  template <int dim>
   std::optional<ScalarNodeSpace<dim>>
   DamageProblem<dim>::node_space() const
   {

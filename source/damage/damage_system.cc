@@ -246,15 +246,6 @@ namespace VPContact
 
 
   template <int dim>
-  const IndexSet &
-  DamageSystem<dim>::full_dofs() const
-  {
-    return damage_dofs;
-  }
-
-
-
-  template <int dim>
   const std::vector<unsigned int> &
   DamageSystem<dim>::shape_functions() const
   {

@@ -137,7 +137,6 @@ namespace VPContact
   double
   Verification<dim>::damage_error(const DoFHandler<dim> &dof_handler,
                                   const LA::MPI::Vector &solution,
-                                  const IndexSet        &damage_dofs,
                                   const double           time)
   {
     exact_damage->set_time(time);
@@ -151,9 +150,8 @@ namespace VPContact
                           solution.get_mpi_communicator());
     VectorTools::interpolate(dof_handler, exact, nodal, mask);
     double error = 0;
-    for (const auto dof : damage_dofs)
-      if (dof_handler.locally_owned_dofs().is_element(dof))
-        error = std::max(error, std::abs(nodal(dof) - solution(dof)));
+    for (const auto dof : DoFTools::extract_dofs(dof_handler, mask))
+      error = std::max(error, std::abs(nodal(dof) - solution(dof)));
     error = Utilities::MPI::max(error, solution.get_mpi_communicator());
     max_damage_error = std::max(max_damage_error, error);
     return error;

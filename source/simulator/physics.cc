@@ -55,6 +55,24 @@ namespace VPContact
 
 
   template <int dim>
+  std::vector<std::string>
+  Physics<dim>::solution_field_names() const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
+  std::vector<NodalField<dim>>
+  Physics<dim>::output_fields(const IndexSet &) const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
   std::string
   Physics<dim>::iteration_counts() const
   {

@@ -60,8 +60,9 @@ namespace VPContact
     // stress at the quadrature points.
     const LA::MPI::Vector &solution = displacement_problem.ghosted_solution();
     Snapshot<dim>          snapshot;
-    snapshot.time                            = time;
-    snapshot.has_damage                      = damage_model.is_active();
+    snapshot.time = time;
+    // The element's layout says whether zeta is a component of it.
+    snapshot.has_damage = discretization.finite_element().n_components() > dim;
     constexpr unsigned int                 V = Snapshot<dim>::n_vertices;
     std::array<Point<dim>, V>              vertices;
     std::array<Tensor<1, dim>, V>          u;

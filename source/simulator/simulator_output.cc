@@ -13,6 +13,8 @@
 
 #include <cstdio>
 #include <fstream>
+#include <list>
+#include <memory>
 #include <utility>
 
 namespace VPContact
@@ -34,68 +36,6 @@ namespace VPContact
               "stress_xz",
               "stress_yz"};
     }
-
-    // The x component of the contact status vector as the scalar field
-    // contact_status (the others are unused).
-    template <int dim>
-    class ContactStatusField : public DataPostprocessorScalar<dim>
-    {
-    public:
-      ContactStatusField()
-        : DataPostprocessorScalar<dim>("contact_status", update_values)
-      {}
-
-      void
-      evaluate_vector_field(
-        const DataPostprocessorInputs::Vector<dim> &inputs,
-        std::vector<Vector<double>>                &computed) const override
-      {
-        for (unsigned int q = 0; q < computed.size(); ++q)
-          computed[q](0) = inputs.solution_values[q](0);
-      }
-    };
-
-    // The tangential traction of the contact nodes in the displacement
-    // components of a vector (FrictionActiveSet::fill_output()): in 2D the
-    // scalar sigma_tau along the node's tangent, in the x component; in 3D
-    // the vector sigma_tau.
-    template <int dim>
-    class TractionField : public DataPostprocessor<dim>
-    {
-    public:
-      void
-      evaluate_vector_field(
-        const DataPostprocessorInputs::Vector<dim> &inputs,
-        std::vector<Vector<double>>                &computed) const override
-      {
-        for (unsigned int q = 0; q < computed.size(); ++q)
-          for (unsigned int c = 0; c < computed[q].size(); ++c)
-            computed[q](c) = inputs.solution_values[q](c);
-      }
-
-      std::vector<std::string>
-      get_names() const override
-      {
-        return std::vector<std::string>(dim == 2 ? 1 : dim,
-                                        "tangential_traction");
-      }
-
-      std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      get_data_component_interpretation() const override
-      {
-        return std::vector<
-          DataComponentInterpretation::DataComponentInterpretation>(
-          dim == 2 ? 1 : dim,
-          dim == 2 ? DataComponentInterpretation::component_is_scalar :
-                     DataComponentInterpretation::component_is_part_of_vector);
-      }
-
-      UpdateFlags
-      get_needed_update_flags() const override
-      {
-        return update_values;
-      }
-    };
 
     // DataOut, with the patches it built handed out, so that a FieldWriter
     // can write them. They are moved out rather than copied: a copy
@@ -133,10 +73,12 @@ namespace VPContact
     template <int dim>
     struct FieldSources
     {
-      PatchDataOut<dim>           data_out;
-      LA::MPI::BlockVector        solution, status, traction;
-      ContactStatusField<dim>     status_field;
-      TractionField<dim>          traction_field;
+      PatchDataOut<dim>    data_out;
+      LA::MPI::BlockVector solution;
+      /// The physics objects' nodal fields: a list, since DataOut keeps
+      /// the address of each vector.
+      std::list<LA::MPI::BlockVector>                            nodal;
+      std::vector<std::shared_ptr<const DataPostprocessor<dim>>> readers;
       Vector<double>              von_mises, subdomain;
       std::vector<Vector<double>> components;
     };
@@ -192,27 +134,26 @@ namespace VPContact
 
 
 
-    // The contact nodes' status and tangential traction into @p sources,
-    // in the blocks of @p layout (the solution's).
+    // The nodal fields of a physics object into @p sources, in the blocks
+    // of @p layout (the solution's).
     template <int dim>
     void
-    add_contact_fields(const FrictionProblem<dim> &friction,
-                       const LA::MPI::BlockVector &layout,
-                       const IndexSet             &relevant_dofs,
-                       FieldSources<dim>          &sources)
+    add_nodal_fields(std::vector<NodalField<dim>> &&fields,
+                     const LA::MPI::BlockVector    &layout,
+                     const IndexSet                &relevant_dofs,
+                     FieldSources<dim>             &sources)
     {
-      const MPI_Comm  communicator = layout.block(0).get_mpi_communicator();
-      LA::MPI::Vector status(layout.locally_owned_elements(), communicator);
-      LA::MPI::Vector traction(status);
-      friction.fill_output(status, traction);
+      const MPI_Comm communicator = layout.block(0).get_mpi_communicator();
       LA::MPI::BlockVector blocks(layout);
-      copy_into_blocks(status, blocks);
-      sources.status = ghosted_blocks(blocks, relevant_dofs, communicator);
-      copy_into_blocks(traction, blocks);
-      sources.traction = ghosted_blocks(blocks, relevant_dofs, communicator);
-      sources.data_out.add_data_vector(sources.status, sources.status_field);
-      sources.data_out.add_data_vector(sources.traction,
-                                       sources.traction_field);
+      for (NodalField<dim> &field : fields)
+        {
+          copy_into_blocks(field.values, blocks);
+          sources.nodal.push_back(
+            ghosted_blocks(blocks, relevant_dofs, communicator));
+          sources.readers.push_back(std::move(field.postprocessor));
+          sources.data_out.add_data_vector(sources.nodal.back(),
+                                           *sources.readers.back());
+        }
     }
 
 
@@ -443,12 +384,13 @@ namespace VPContact
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
                      DataComponentInterpretation::component_is_part_of_vector);
-    if (damage_model.is_active())
-      {
-        names.emplace_back("damage");
-        interpretation.push_back(
-          DataComponentInterpretation::component_is_scalar);
-      }
+    for (const Physics<dim> *object : physics)
+      for (const std::string &name : object->solution_field_names())
+        {
+          names.push_back(name);
+          interpretation.push_back(
+            DataComponentInterpretation::component_is_scalar);
+        }
     data_out.attach_dof_handler(dof_handler);
     sources->solution = ghosted_blocks(displacement_problem.solution_blocks(),
                                        locally_relevant_dofs,
@@ -458,13 +400,13 @@ namespace VPContact
                              DataOut<dim>::type_dof_data,
                              interpretation);
 
-    // Contact nodes: status (0 none, 1 stick, 2 slip), traction sigma_tau.
-    if (const FrictionProblem<dim> *const friction
-        = displacement_problem.contact())
-      add_contact_fields(*friction,
-                         displacement_problem.solution_blocks(),
-                         locally_relevant_dofs,
-                         *sources);
+    // The physics objects' own fields (the contact nodes' status and
+    // traction).
+    for (const Physics<dim> *object : physics)
+      add_nodal_fields(object->output_fields(locally_owned_dofs),
+                       displacement_problem.solution_blocks(),
+                       locally_relevant_dofs,
+                       *sources);
 
     add_cell_fields(*sources,
                     von_mises,

@@ -66,7 +66,6 @@ namespace VPContact
         const double error
           = verification.damage_error(dof_handler,
                                       displacement_problem.ghosted_solution(),
-                                      damage_problem->full_dofs(),
                                       time);
         AssertThrow(std::isfinite(error),
                     ExcMessage("Verification/Exact damage is not finite (NaN "

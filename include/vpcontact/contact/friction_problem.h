@@ -142,9 +142,9 @@ namespace VPContact
     double
     max_violation() const;
 
-    /// Status and tangential traction of the contact nodes, for output.
-    void
-    fill_output(LA::MPI::Vector &status, LA::MPI::Vector &traction) const;
+    /// The contact nodes' status and tangential traction, as output fields.
+    std::vector<NodalField<dim>>
+    output_fields(const IndexSet &owned_dofs) const override;
 
     /// The sets into @p sets_owned and the counters a resumed run needs.
     void

@@ -119,13 +119,13 @@ namespace VPContact
     std::string
     violation_summary() const override;
 
+    /// {"damage"}: zeta's name in the output fields.
+    std::vector<std::string>
+    solution_field_names() const override;
+
     /// The largest violation of the bounds so far (exactly 0 expected).
     double
     max_violation() const;
-
-    /// The damage degrees of freedom in the full numbering.
-    const IndexSet &
-    full_dofs() const;
 
     /// The damage block as a scalar node space (for the error estimate's
     /// recovery), valid until the next setup().

@@ -78,10 +78,6 @@ namespace VPContact
     const IndexSet &
     relevant() const;
 
-    /// The FESystem's locally relevant damage degrees of freedom.
-    const IndexSet &
-    full_dofs() const;
-
     /**
      * The shape functions of the FESystem that belong to the damage, in the
      * order in which dof_indices() lists their compact indices.

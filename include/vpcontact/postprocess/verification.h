@@ -53,13 +53,13 @@ namespace VPContact
     has_exact_damage() const;
 
     /**
-     * max_i |zeta_h(x_i) - zeta(x_i, time)| over the locally owned
-     * @p damage_dofs (all ranks); the largest is kept for summary().
+     * max_i |zeta_h(x_i) - zeta(x_i, time)| over the damage nodes (the
+     * last component of @p dof_handler's element) of all ranks; the
+     * largest is kept for summary().
      */
     double
     damage_error(const DoFHandler<dim> &dof_handler,
                  const LA::MPI::Vector &solution,
-                 const IndexSet        &damage_dofs,
                  const double           time);
 
     /// Whether an exact stress is given.

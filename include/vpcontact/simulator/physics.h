@@ -12,8 +12,11 @@
 #include <vpcontact/postprocess/statistics.h>
 #include <vpcontact/simulator/simulator_access.h>
 
+#include <deal.II/numerics/data_postprocessor.h>
+
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -27,6 +30,16 @@ namespace VPContact
   {
     /// The volume fraction where zeta < 1 at the quadrature points.
     double damaged_fraction = 0;
+  };
+
+  /// A nodal field a physics object adds to the output: values on every
+  /// degree of freedom of the FESystem (as the solution has them) and the
+  /// postprocessor that names the field and reads it from those values.
+  template <int dim>
+  struct NodalField
+  {
+    LA::MPI::Vector                               values;
+    std::shared_ptr<const DataPostprocessor<dim>> postprocessor;
   };
 
   /**
@@ -91,6 +104,17 @@ namespace VPContact
                    std::string          &line,
                    const StepQuantities &quantities)
       = 0;
+
+    /// The names of the object's scalar components of the solution in the
+    /// output fields, in the FESystem's order (none by default).
+    virtual std::vector<std::string>
+    solution_field_names() const;
+
+    /// The object's nodal fields for the output of this step, with values
+    /// on the degrees of freedom @p owned_dofs of this rank (none by
+    /// default).
+    virtual std::vector<NodalField<dim>>
+    output_fields(const IndexSet &owned_dofs) const;
 
     /// The iteration count of the step for the screen line (which only
     /// runs that do not promise deterministic output print), or "".
