@@ -1,5 +1,6 @@
 // The primal-dual active set for Tresca friction: contact nodes, their
 // stick/slip decisions, and their constraints and forces.
+#include <vpcontact/contact/boundary_measures.h>
 #include <vpcontact/contact/friction_active_set.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
@@ -13,66 +14,6 @@
 
 namespace VPContact
 {
-  namespace
-  {
-    // The lumped length m_i = int_{Gamma_C} phi_i ds of every contact
-    // vertex, at its x-component dof, as a ghosted vector.
-    template <int dim>
-    LA::MPI::Vector
-    lumped_lengths(const DoFHandler<dim>              &dof_handler,
-                   const std::set<types::boundary_id> &contact_ids,
-                   const IndexSet                     &locally_relevant_dofs)
-    {
-      const auto     &fe           = dof_handler.get_fe();
-      const IndexSet &owned_dofs   = dof_handler.locally_owned_dofs();
-      const MPI_Comm  communicator = dof_handler.get_communicator();
-      const auto      on_contact   = [&](const auto &face) {
-        return face->at_boundary()
-               && contact_ids.count(face->boundary_id()) == 1;
-      };
-      // The lumped length m_i = int_{Gamma_C} phi_i ds (trapezoidal rule on
-      // each face), accumulated at the x-component dof of each vertex. The
-      // vector can write into ghost entries, which compress() sends to their
-      // owners.
-      LA::MPI::Vector lengths;
-      lengths.reinit(owned_dofs, locally_relevant_dofs, communicator, true);
-      const Quadrature<dim - 1> face_quadrature
-        = fe.reference_cell()
-            .face_reference_cell(0)
-            .template get_gauss_type_quadrature<dim - 1>(2);
-      FEFaceValues<dim> fe_face_values(get_default_linear_mapping(
-                                         dof_handler.get_triangulation()),
-                                       fe,
-                                       face_quadrature,
-                                       update_values | update_JxW_values);
-      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const auto &face : cell->face_iterators())
-            if (on_contact(face))
-              {
-                fe_face_values.reinit(cell, face);
-                cell->get_dof_indices(dof_indices);
-                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                  if (fe.system_to_component_index(i).first == 0)
-                    {
-                      double integral = 0;
-                      for (const unsigned int q :
-                           fe_face_values.quadrature_point_indices())
-                        integral += fe_face_values.shape_value(i, q)
-                                    * fe_face_values.JxW(q);
-                      if (integral != 0.)
-                        lengths(dof_indices[i]) += integral;
-                    }
-              }
-      lengths.compress(VectorOperation::add);
-      LA::MPI::Vector relevant_lengths(owned_dofs,
-                                       locally_relevant_dofs,
-                                       communicator);
-      relevant_lengths = lengths;
-      return relevant_lengths;
-    }
-  } // namespace
 
 
 
@@ -82,9 +23,12 @@ namespace VPContact
     const DoFHandler<dim>              &dof_handler,
     const AffineConstraints<double>    &base_constraints,
     const std::set<types::boundary_id> &contact_ids,
-    const IndexSet                     &locally_relevant_dofs)
+    const IndexSet                     &locally_relevant_dofs,
+    const TrescaFriction<dim>          &law)
   {
     communicator = dof_handler.get_communicator();
+    unilateral   = law.unilateral();
+    coulomb = (law.friction_law() == TrescaFriction<dim>::FrictionLaw::coulomb);
     nodes.clear();
     const IndexSet &owned_dofs = dof_handler.locally_owned_dofs();
     const auto      on_contact = [&](const auto &face) {
@@ -93,6 +37,10 @@ namespace VPContact
 
     const LA::MPI::Vector relevant_lengths
       = lumped_lengths(dof_handler, contact_ids, locally_relevant_dofs);
+    // The body's outward normal at each node, unless the foundation gives
+    // one (unilateral contact needs it before the node is made).
+    const LA::MPI::Vector relevant_normals
+      = lumped_normals(dof_handler, contact_ids, locally_relevant_dofs);
 
     // The nodes, on every cell this rank sees (owned or ghost).
     std::set<types::global_dof_index> seen;
@@ -103,11 +51,28 @@ namespace VPContact
             for (const unsigned int v : face->vertex_indices())
               {
                 Node node;
-                if (!seen.insert(face->vertex_dof_index(v, 0)).second
-                    || !make_node(face, v, base_constraints, node))
+                if (!seen.insert(face->vertex_dof_index(v, 0)).second)
                   continue;
-                node.owned  = owned_dofs.is_element(node.free_dofs[0]);
+                for (unsigned int d = 0; d < dim; ++d)
+                  node.normal[d]
+                    = relevant_normals(face->vertex_dof_index(v, d));
+                node.normal = law.foundation_normal().value_or(
+                  node.normal / node.normal.norm());
+                if (!make_node(face, v, base_constraints, node))
+                  continue;
+                // All components of a vertex have one owner.
+                node.owned  = owned_dofs.is_element(node.dofs[0]);
                 node.length = relevant_lengths(node.dofs[0]);
+                node.mu     = coulomb ? law.coefficient(node.position) : 0.;
+                // With unilateral contact, the nodes that touch the
+                // foundation at t = 0 start in contact, the others
+                // separated: a cylinder on a plane starts from one line.
+                if (unilateral)
+                  {
+                    node.initial_gap = law.initial_gap(node.position, 0.);
+                    if (node.initial_gap > 0)
+                      node.status = ContactStatus::separated;
+                  }
                 nodes.push_back(node);
               }
   }
@@ -125,6 +90,8 @@ namespace VPContact
     for (unsigned int d = 0; d < dim; ++d)
       node.dofs[d] = face->vertex_dof_index(v, d);
     node.position = face->vertex(v);
+    if (unilateral)
+      return make_unilateral_node(base_constraints, node);
 
     // At least one free component and at least one held by the bilateral
     // condition; none free means a Dirichlet part holds the node (the clamp
@@ -190,8 +157,14 @@ namespace VPContact
   FrictionActiveSet<dim>::set_bounds(const TrescaFriction<dim> &friction,
                                      const double               time)
   {
+    // Coulomb's bounds stay those of the last iterate: the warm start.
     for (auto &node : nodes)
-      node.g = friction.bound(node.position, time);
+      {
+        if (!coulomb)
+          node.g = friction.bound(node.position, time);
+        if (unilateral)
+          node.initial_gap = friction.initial_gap(node.position, time);
+      }
   }
 
 
@@ -322,43 +295,84 @@ namespace VPContact
 
 
   template <int dim>
-  typename FrictionActiveSet<dim>::Changes
-  FrictionActiveSet<dim>::update(const LA::MPI::Vector &residual,
-                                 const LA::MPI::Vector &increment,
-                                 const double           youngs_modulus,
-                                 const double           c_factor,
-                                 const double           direction_tolerance)
+  double
+  FrictionActiveSet<dim>::measure(const LA::MPI::Vector &residual,
+                                  const LA::MPI::Vector &increment,
+                                  const LA::MPI::Vector &previous)
   {
-    Changes changes;
+    double bound_scale = 0;
     for (auto &node : nodes)
       {
-        Tensor<1, dim> r, du;
+        Tensor<1, dim> r, du, u;
         for (unsigned int d = 0; d < dim; ++d)
           {
             r[d]  = residual(node.dofs[d]);
             du[d] = increment(node.dofs[d]);
+            u[d]  = previous(node.dofs[d]) + du[d];
           }
         node.lambda   = node.coordinates(r) / node.length;
         node.traction = r.norm() / node.length;
         node.slip     = node.coordinates(du);
+        node.pressure = (r * node.normal) / node.length;
+        node.gap      = unilateral ? node.initial_gap - u * node.normal : 0.;
+        if (node.owned)
+          bound_scale
+            = std::max(bound_scale, node.mu * std::max(node.pressure, 0.));
+      }
+    return Utilities::MPI::max(bound_scale, communicator);
+  }
 
-        // c of the order of E/h, so that lambda and c w compare alike.
-        const double c    = c_factor * youngs_modulus / node.length;
-        const auto   next = tresca_decision(node.lambda, node.slip, node.g, c);
-        const bool   stick_changed = (next.status != node.status);
-        const bool   turned        = next.status == ContactStatus::slip
+
+
+  template <int dim>
+  typename FrictionActiveSet<dim>::Changes
+  FrictionActiveSet<dim>::update(const LA::MPI::Vector     &residual,
+                                 const LA::MPI::Vector     &increment,
+                                 const LA::MPI::Vector     &previous,
+                                 const double               youngs_modulus,
+                                 const TrescaFriction<dim> &law)
+  {
+    // The multipliers, slips and gaps of this iterate at every node first:
+    // Coulomb's bounds are compared with the largest of them.
+    const double bound_scale = measure(residual, increment, previous);
+    Changes      changes;
+    for (auto &node : nodes)
+      {
+        // c of the order of E/h, so that the multipliers and c times the
+        // displacements compare alike.
+        const double c
+          = law.complementarity_factor() * youngs_modulus / node.length;
+        if (unilateral && decide_contact(node, c))
+          {
+            if (node.owned)
+              {
+                ++changes.n_changed;
+                ++changes.n_stick_changed;
+                ++changes.n_matrix_changed;
+              }
+            continue;
+          }
+        if (node.status == ContactStatus::separated)
+          continue;
+        const bool moved = update_bound(node, law, bound_scale);
+        const auto next  = tresca_decision(node.lambda, node.slip, node.g, c);
+        const bool stick_changed = (next.status != node.status);
+        const bool turned        = next.status == ContactStatus::slip
                             && (stick_changed
                                 || (next.direction - node.direction).norm()
-                                     > direction_tolerance);
+                                     > law.direction_tolerance());
+        const bool stiffer = next.status == ContactStatus::slip && moved;
         if (node.owned)
           {
-            changes.n_changed += stick_changed || turned;
+            changes.n_changed += stick_changed || turned || moved;
+            changes.n_bounds_moved += moved;
             changes.n_stick_changed += stick_changed;
             changes.n_matrix_changed
-              += stick_changed || (turned && node.tangents.size() > 1);
+              += stick_changed
+                 || ((turned || stiffer) && node.tangents.size() > 1);
           }
         node.status = next.status;
-        if (stick_changed || turned)
+        if (stick_changed || turned || stiffer)
           {
             node.direction      = next.direction;
             node.slip_stiffness = next.slip_stiffness;
@@ -369,6 +383,8 @@ namespace VPContact
       = Utilities::MPI::sum(changes.n_stick_changed, communicator);
     changes.n_matrix_changed
       = Utilities::MPI::sum(changes.n_matrix_changed, communicator);
+    changes.n_bounds_moved
+      = Utilities::MPI::sum(changes.n_bounds_moved, communicator);
     return changes;
   }
 
@@ -380,7 +396,7 @@ namespace VPContact
   {
     unsigned int n_stick = 0, n_slip = 0;
     for (const auto &node : nodes)
-      if (node.owned)
+      if (node.owned && node.status != ContactStatus::separated)
         (node.status == ContactStatus::stick ? n_stick : n_slip) += 1;
     return {Utilities::MPI::sum(n_stick, communicator),
             Utilities::MPI::sum(n_slip, communicator)};
@@ -411,7 +427,7 @@ namespace VPContact
     // A stick node of a settled iteration has |lambda| <= g.
     double utilisation = 0;
     for (const auto &node : nodes)
-      if (node.owned && node.g > 0)
+      if (node.owned && node.g > 0 && node.status != ContactStatus::separated)
         utilisation = std::max(utilisation,
                                node.status == ContactStatus::slip ?
                                  1. :
@@ -439,7 +455,7 @@ namespace VPContact
     stress_scale = Utilities::MPI::max(stress_scale, communicator);
     w_scale      = Utilities::MPI::max(w_scale, communicator);
     for (const auto &node : nodes)
-      if (node.owned)
+      if (node.owned && node.status != ContactStatus::separated)
         {
           violation      = std::max(violation, node.lambda.norm() - node.g);
           const double w = node.slip.norm();
@@ -516,7 +532,7 @@ namespace VPContact
         for (unsigned int k = 0; k < node.tangents.size(); ++k)
           direction[k] = state(node.dofs[k + 1]);
         const double size = direction.norm();
-        AssertThrow((status == 1. && size == 0.)
+        AssertThrow(((status == 1. || status == 3.) && size == 0.)
                       || (status == 2. && std::abs(size - 1.) < 1e-8),
                     ExcMessage("The checkpoint holds no valid stick/slip "
                                "state at the contact node at "

@@ -12,14 +12,16 @@ namespace VPContact
 {
   namespace
   {
-    // The x component of the contact status vector as the scalar field
-    // contact_status (the others are unused).
+    // One component of a nodal vector as a scalar field: the status (x
+    // component of its vector), the contact pressure and the gap (x and y
+    // components of theirs).
     template <int dim>
-    class ContactStatusField : public DataPostprocessorScalar<dim>
+    class NodeScalarField : public DataPostprocessorScalar<dim>
     {
     public:
-      ContactStatusField()
-        : DataPostprocessorScalar<dim>("contact_status", update_values)
+      NodeScalarField(const std::string &name, const unsigned int component)
+        : DataPostprocessorScalar<dim>(name, update_values)
+        , component(component)
       {}
 
       void
@@ -28,9 +30,14 @@ namespace VPContact
         std::vector<Vector<double>>                &computed) const override
       {
         for (unsigned int q = 0; q < computed.size(); ++q)
-          computed[q](0) = inputs.solution_values[q](0);
+          computed[q](0) = inputs.solution_values[q](component);
       }
+
+    private:
+      const unsigned int component;
     };
+
+
 
     // The tangential traction of the contact nodes in the displacement
     // components of a vector (FrictionActiveSet::fill_output()): in 2D the
@@ -93,8 +100,10 @@ namespace VPContact
   {
     active_set = FrictionActiveSet<dim>();
     contact_cells.clear();
-    last_iterations   = 0;
-    largest_violation = 0;
+    last_iterations            = 0;
+    largest_violation          = 0;
+    largest_pressure_violation = 0;
+    largest_gap_violation      = 0;
   }
 
 
@@ -111,7 +120,8 @@ namespace VPContact
     active_set.setup(dof_handler,
                      base_constraints,
                      contact_boundary_ids,
-                     locally_relevant_dofs);
+                     locally_relevant_dofs,
+                     friction);
 
     // The multipliers are read at the contact nodes only, so the residual
     // is assembled only on the cells that hold one.
@@ -137,10 +147,13 @@ namespace VPContact
 
   template <int dim>
   void
-  FrictionProblem<dim>::add_stick_constraints(
-    AffineConstraints<double> &constraints) const
+  FrictionProblem<dim>::add_constraints(AffineConstraints<double> &constraints,
+                                        const LA::MPI::Vector     *previous,
+                                        const bool with_stick) const
   {
-    active_set.add_stick_constraints(constraints);
+    active_set.add_contact_constraints(constraints, previous);
+    if (with_stick)
+      active_set.add_stick_constraints(constraints);
   }
 
 
@@ -151,6 +164,7 @@ namespace VPContact
   {
     active_set.set_bounds(friction, time);
     last_iterations = 0;
+    step_fingerprints.assign(1, active_set.fingerprint());
   }
 
 
@@ -191,16 +205,31 @@ namespace VPContact
   template <int dim>
   typename FrictionActiveSet<dim>::Changes
   FrictionProblem<dim>::update(const LA::MPI::Vector &increment,
+                               const LA::MPI::Vector &previous,
                                const double           youngs_modulus,
                                const LA::MPI::Vector &assembled_residual)
   {
     ++last_iterations;
-    residual = assembled_residual;
-    return active_set.update(residual,
-                             increment,
-                             youngs_modulus,
-                             friction.complementarity_factor(),
-                             friction.direction_tolerance());
+    residual     = assembled_residual;
+    auto changes = active_set.update(residual,
+                                     increment,
+                                     previous,
+                                     youngs_modulus,
+                                     friction);
+    // Sets that come back after they changed: the iteration cycles (the
+    // semismooth Newton method converges only locally). With Coulomb's
+    // law the bounds move between visits, so a set may come back on the
+    // way to the solution: there it counts only once no bound moves.
+    const unsigned long long print = active_set.fingerprint();
+    if (print != step_fingerprints.back() && changes.n_bounds_moved == 0)
+      for (unsigned int k = step_fingerprints.size(); k-- > 0;)
+        if (step_fingerprints[k] == print)
+          {
+            changes.cycle_length = step_fingerprints.size() - k;
+            break;
+          }
+    step_fingerprints.push_back(print);
+    return changes;
   }
 
 
@@ -280,6 +309,36 @@ namespace VPContact
     std::snprintf(text, sizeof(text), "%.4f", utilisation);
     line += "  stick/slip = " + std::to_string(n_stick) + "/"
             + std::to_string(n_slip) + "  max|sigma_t|/g = " + text;
+    if (friction.unilateral())
+      add_normal_statistics(statistics, line);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::add_normal_statistics(Statistics  &statistics,
+                                              std::string &line)
+  {
+    // The lumped measures are lengths on a 2D body's boundary, areas on a
+    // 3D one's.
+    const auto        measures = active_set.normal_measures();
+    const std::string measure  = (dim == 2 ? "length" : "area");
+    statistics.add_value("contact_nodes", measures.n_contact);
+    statistics.add_value("separated_nodes", measures.n_separated);
+    statistics.add_value("contact_" + measure, measures.contact_measure);
+    statistics.add_value("stick_" + measure, measures.stick_measure);
+    statistics.add_value("max_contact_pressure", measures.max_pressure);
+    statistics.add_value("pressure_violation", measures.pressure_violation);
+    statistics.add_value("gap_violation", measures.gap_violation);
+    largest_pressure_violation
+      = std::max(largest_pressure_violation, measures.pressure_violation);
+    largest_gap_violation
+      = std::max(largest_gap_violation, measures.gap_violation);
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4e", measures.max_pressure);
+    line += "  contact/separated = " + std::to_string(measures.n_contact) + "/"
+            + std::to_string(measures.n_separated) + "  max p = " + text;
   }
 
 
@@ -299,10 +358,29 @@ namespace VPContact
   {
     char violation[32];
     std::snprintf(violation, sizeof(violation), "%.1e", largest_violation);
-    return std::string("Tresca conditions at every contact node and step: "
-                       "largest violation ")
-           + violation + " of max(g, |sigma nu|) (holds to 1e-8: "
-           + (largest_violation < 1e-8 ? "yes" : "NO") + ")\n";
+    std::string text
+      = std::string(friction.friction_law()
+                        == TrescaFriction<dim>::FrictionLaw::coulomb ?
+                      "Coulomb" :
+                      "Tresca")
+        + " conditions at every contact node and step: largest violation "
+        + violation + " of max(g, |sigma nu|) (holds to 1e-8: "
+        + (largest_violation < 1e-8 ? "yes" : "NO") + ")\n";
+    if (friction.unilateral())
+      {
+        char pressure[32], gap[32];
+        std::snprintf(pressure,
+                      sizeof(pressure),
+                      "%.1e",
+                      largest_pressure_violation);
+        std::snprintf(gap, sizeof(gap), "%.1e", largest_gap_violation);
+        text += std::string("Signorini conditions at every contact node and "
+                            "step: largest violation of the pressure ")
+                + pressure + " of max(g, |sigma nu|) (holds to 1e-8: "
+                + (largest_pressure_violation < 1e-8 ? "yes" : "NO")
+                + "), of the gap " + gap + " m\n";
+      }
+    return text;
   }
 
 
@@ -323,12 +401,24 @@ namespace VPContact
     // Status (0 none, 1 stick, 2 slip) and tangential traction sigma_tau of
     // the contact nodes, in the displacement entries of a vector on every
     // degree of freedom.
-    std::vector<NodalField<dim>> fields(2);
-    fields[0].values.reinit(owned_dofs, communicator);
-    fields[1].values.reinit(owned_dofs, communicator);
+    // With unilateral contact (3 separated), also the contact pressure
+    // -sigma_nu and the gap, from one vector.
+    std::vector<NodalField<dim>> fields(friction.unilateral() ? 4 : 2);
+    for (auto &field : fields)
+      field.values.reinit(owned_dofs, communicator);
     active_set.fill_output(fields[0].values, fields[1].values);
-    fields[0].postprocessor = std::make_shared<ContactStatusField<dim>>();
+    fields[0].postprocessor
+      = std::make_shared<NodeScalarField<dim>>("contact_status", 0);
     fields[1].postprocessor = std::make_shared<TractionField<dim>>();
+    if (friction.unilateral())
+      {
+        active_set.fill_normal_output(fields[2].values);
+        fields[3].values = fields[2].values;
+        fields[2].postprocessor
+          = std::make_shared<NodeScalarField<dim>>("contact_pressure", 0);
+        fields[3].postprocessor
+          = std::make_shared<NodeScalarField<dim>>("gap", 1);
+      }
     return fields;
   }
 
@@ -342,6 +432,11 @@ namespace VPContact
   {
     active_set.write_state(sets_owned);
     counters["max_friction_violation"] = largest_violation;
+    if (friction.unilateral())
+      {
+        counters["max_pressure_violation"] = largest_pressure_violation;
+        counters["max_gap_violation"]      = largest_gap_violation;
+      }
   }
 
 
@@ -355,6 +450,11 @@ namespace VPContact
   {
     active_set.read_state(sets);
     largest_violation = counter("max_friction_violation");
+    if (friction.unilateral())
+      {
+        largest_pressure_violation = counter("max_pressure_violation");
+        largest_gap_violation      = counter("max_gap_violation");
+      }
   }
 
 

@@ -1,4 +1,5 @@
-// The section "Contact": the Tresca friction bound and its checks.
+// The section "Contact": the normal condition, the friction law with its bound
+// or coefficient, and their checks.
 #include <vpcontact/contact/tresca_friction.h>
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/input/parsed_function.h>
@@ -46,6 +47,7 @@ namespace VPContact
                         "boundary [N/m^2], an expression in x, y (z) and t. "
                         "g = 0 everywhere is frictionless sliding (no active "
                         "set iteration is run).");
+      declare_law_parameters(prm);
       prm.declare_entry("Maximum active set iterations",
                         "50",
                         Patterns::Integer(1, 10000),
@@ -84,6 +86,63 @@ namespace VPContact
 
   template <int dim>
   void
+  TrescaFriction<dim>::declare_law_parameters(ParameterHandler &prm)
+  {
+    // The entries of the normal condition and of Coulomb's law (in the
+    // subsection Contact, entered by the caller).
+    prm.declare_entry(
+      "Normal condition",
+      "bilateral",
+      Patterns::Selection("bilateral|unilateral"),
+      "'bilateral' (the paper's): the body slides on the foundation and "
+      "never leaves it, u.nu = 0 on the contact boundary. 'unilateral' "
+      "(Signorini): u.nu <= g_0 with the initial gap g_0 (Initial gap), "
+      "sigma_nu <= 0 and sigma_nu (u.nu - g_0) = 0 node by node; the body "
+      "lifts off where the load pulls it away, and only nodes in contact "
+      "carry friction.");
+    prm.declare_entry("Initial gap",
+                      "0",
+                      Patterns::Anything(),
+                      "Unilateral only: g_0(x, t) >= 0, the distance from "
+                      "the body's point x to the foundation along the "
+                      "foundation's normal [m], an expression in x, y (z) "
+                      "and t. 0 for a body that rests on the foundation; "
+                      "for a cylinder of radius R touching the plane y = 0 "
+                      "at the origin, y.");
+    prm.declare_entry("Foundation normal",
+                      "",
+                      Patterns::Anything(),
+                      "Unilateral only: the unit normal nu of a plane "
+                      "foundation, pointing from the body into it, dim "
+                      "comma-separated values (e.g. 0, -1 for a foundation "
+                      "below). Empty: each contact node takes the body's "
+                      "outward normal there (a flat contact boundary).");
+    prm.declare_entry("Friction law",
+                      "Tresca",
+                      Patterns::Selection("Tresca|Coulomb"),
+                      "'Tresca' (the paper's): the friction bound g is "
+                      "Friction bound. 'Coulomb': g = mu |sigma_nu| with mu "
+                      "the Friction coefficient and sigma_nu the normal "
+                      "stress of the current iterate.");
+    prm.declare_entry("Friction coefficient",
+                      "0",
+                      Patterns::Anything(),
+                      "Coulomb only: mu(x) >= 0 on the contact boundary, an "
+                      "expression in x, y (z) and t. 0 everywhere is "
+                      "frictionless.");
+    prm.declare_entry("Coulomb bound tolerance",
+                      "1e-10",
+                      Patterns::Double(0),
+                      "Coulomb only: the iteration has converged when no "
+                      "node changes set and no bound mu |sigma_nu| moves by "
+                      "more than this fraction of the largest bound. Must "
+                      "lie in [1e-14, 1e-2].");
+  }
+
+
+
+  template <int dim>
+  void
   TrescaFriction<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
@@ -92,8 +151,51 @@ namespace VPContact
     iteration_cap = prm.get_integer("Maximum active set iterations");
     c_factor      = prm.get_double("Complementarity factor");
     direction_tol = prm.get_double("Slip direction tolerance");
+    parse_law(prm);
     prm.leave_subsection();
     check_iteration_constants();
+  }
+
+
+
+  template <int dim>
+  void
+  TrescaFriction<dim>::parse_law(ParameterHandler &prm)
+  {
+    is_unilateral = (prm.get("Normal condition") == "unilateral");
+    law = (prm.get("Friction law") == "Coulomb" ? FrictionLaw::coulomb :
+                                                  FrictionLaw::tresca);
+    friction_coefficient
+      = parse_function_entry<dim>(prm, "Contact", "Friction coefficient", 1);
+    gap       = parse_function_entry<dim>(prm, "Contact", "Initial gap", 1);
+    bound_tol = prm.get_double("Coulomb bound tolerance");
+    foundation.reset();
+    const std::string normal_text = prm.get("Foundation normal");
+    if (Utilities::trim(normal_text).empty())
+      return;
+    std::vector<double> values;
+    try
+      {
+        values = Utilities::string_to_double(
+          Utilities::split_string_list(normal_text));
+      }
+    catch (...)
+      {
+        values.clear();
+      }
+    Tensor<1, dim> normal;
+    for (unsigned int d = 0; d < values.size() && d < dim; ++d)
+      normal[d] = values[d];
+    VPContactCheckParameter(values.size() == dim && std::isfinite(normal.norm())
+                              && normal.norm() > 0,
+                            "Contact/Foundation normal",
+                            normal_text,
+                            "give " + std::to_string(dim)
+                              + " comma-separated numbers, not all zero (e.g. "
+                              + (dim == 2 ? "0, -1" : "0, 0, -1")
+                              + " for a foundation below the body), or leave "
+                                "it empty for the body's own normal.");
+    foundation = normal / normal.norm();
   }
 
 
@@ -121,6 +223,12 @@ namespace VPContact
     // two directions differ by at most 2, so a tolerance of 2 or more
     // accepts any direction and the friction law is not enforced at all.
     VPContactCheckParameter(
+      bound_tol >= 1e-14 && bound_tol <= 1e-2,
+      "Contact/Coulomb bound tolerance",
+      bound_tol,
+      "the tolerance must lie in [1e-14, 1e-2], e.g. 1e-10: Coulomb's law "
+      "holds to about this fraction of the largest bound.");
+    VPContactCheckParameter(
       direction_tol >= 1e-14 && direction_tol <= 1e-2,
       "Contact/Slip direction tolerance",
       direction_tol,
@@ -141,20 +249,24 @@ namespace VPContact
   {
     // The smallest value over the contact vertices of this rank and the
     // given times; then over all ranks, so that every rank decides alike.
+    // Coulomb's law checks its coefficient instead of a bound.
+    const bool           coulomb = (law == FrictionLaw::coulomb);
+    FunctionParser<dim> &function
+      = (coulomb ? *friction_coefficient : *friction_bound);
     double     g_min = std::numeric_limits<double>::max();
     double     g_max = 0;
     Point<dim> where;
     double     when = 0;
     for (const double t : times)
       {
-        friction_bound->set_time(t);
+        function.set_time(t);
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             for (const auto &face : cell->face_iterators())
               if (face->at_boundary() && contact_ids.count(face->boundary_id()))
                 for (const unsigned int v : face->vertex_indices())
                   {
-                    const double g = friction_bound->value(face->vertex(v));
+                    const double g = function.value(face->vertex(v));
                     g_max          = std::max(g_max, g);
                     // A value that is not finite counts as -infinity.
                     if (std::isfinite(g) ?
@@ -183,14 +295,15 @@ namespace VPContact
       = Utilities::MPI::broadcast(triangulation.get_communicator(),
                                   location.str(),
                                   holder);
-    VPContactCheckParameter(global_min >= 0,
-                            "Contact/Friction bound",
-                            (std::isfinite(global_min) ?
-                               to_text(global_min) :
-                               std::string("(not finite)"))
-                              + " at x = " + text,
-                            "the friction bound must be non-negative and "
-                            "finite on the contact boundary.");
+    VPContactCheckParameter(
+      global_min >= 0,
+      coulomb ? "Contact/Friction coefficient" : "Contact/Friction bound",
+      (std::isfinite(global_min) ? to_text(global_min) :
+                                   std::string("(not finite)"))
+        + " at x = " + text,
+      std::string("the friction ") + (coulomb ? "coefficient" : "bound")
+        + " must be non-negative and finite on the "
+          "contact boundary.");
     return Utilities::MPI::max(g_max, triangulation.get_communicator());
   }
 
@@ -202,6 +315,71 @@ namespace VPContact
   {
     friction_bound->set_time(time);
     return friction_bound->value(point);
+  }
+
+
+
+  template <int dim>
+  bool
+  TrescaFriction<dim>::unilateral() const
+  {
+    return is_unilateral;
+  }
+
+
+
+  template <int dim>
+  typename TrescaFriction<dim>::FrictionLaw
+  TrescaFriction<dim>::friction_law() const
+  {
+    return law;
+  }
+
+
+
+  template <int dim>
+  double
+  TrescaFriction<dim>::coefficient(const Point<dim> &point) const
+  {
+    return friction_coefficient->value(point);
+  }
+
+
+
+  template <int dim>
+  double
+  TrescaFriction<dim>::initial_gap(const Point<dim> &point,
+                                   const double      time) const
+  {
+    gap->set_time(time);
+    return gap->value(point);
+  }
+
+
+
+  template <int dim>
+  const std::optional<Tensor<1, dim>> &
+  TrescaFriction<dim>::foundation_normal() const
+  {
+    return foundation;
+  }
+
+
+
+  template <int dim>
+  bool
+  TrescaFriction<dim>::needs_active_set(const double largest_bound) const
+  {
+    return is_unilateral || largest_bound > 0;
+  }
+
+
+
+  template <int dim>
+  double
+  TrescaFriction<dim>::bound_tolerance() const
+  {
+    return bound_tol;
   }
 
 

@@ -306,7 +306,8 @@ namespace VPContact
     const DoFHandler<dim>     &dof_handler,
     AffineConstraints<double> &constraints,
     const double               time,
-    const LA::MPI::Vector     *previous_displacement) const
+    const LA::MPI::Vector     *previous_displacement,
+    const bool                 bilateral_contact) const
   {
     // Dirichlet parts first: interpolate_boundary_values leaves alone the
     // degrees of freedom that are already constrained, and so does the
@@ -342,7 +343,7 @@ namespace VPContact
                                  previous_displacement,
                                  constraints);
 
-    if (!contact_ids.empty())
+    if (bilateral_contact && !contact_ids.empty())
       VectorTools::compute_no_normal_flux_constraints(
         dof_handler,
         0,

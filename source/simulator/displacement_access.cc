@@ -143,12 +143,18 @@ namespace VPContact
   std::string
   DisplacementProblem<dim>::contact_description() const
   {
-    return !boundary_conditions.has_contact_boundary() ?
-             "none" :
-           friction_problem ?
-             "bilateral (u.nu = 0) with Tresca friction, primal-dual "
-             "active set" :
-             "bilateral (u.nu = 0), frictionless (friction bound 0)";
+    if (!boundary_conditions.has_contact_boundary())
+      return "none";
+    const std::string normal = friction.unilateral() ?
+                                 "unilateral (u.nu <= g_0)" :
+                                 "bilateral (u.nu = 0)";
+    if (largest_friction == 0)
+      return normal + ", frictionless (friction bound 0)"
+             + (friction_problem ? ", primal-dual active set" : "");
+    const bool coulomb
+      = friction.friction_law() == TrescaFriction<dim>::FrictionLaw::coulomb;
+    return normal + " with " + (coulomb ? "Coulomb" : "Tresca")
+           + " friction, primal-dual active set";
   }
 
 

@@ -76,18 +76,20 @@ namespace VPContact
       = friction.check_bound(triangulation,
                              boundary_conditions.contact_boundary_ids(),
                              times);
-    // g = 0 everywhere is frictionless sliding: no active set at all.
-    if (g_max > 0)
+    largest_friction = g_max;
+    // Bilateral contact with g = 0 everywhere is frictionless sliding: no
+    // active set at all.
+    if (friction.needs_active_set(g_max))
       friction_problem
         = std::make_unique<FrictionProblem<dim>>(friction, mpi_communicator);
     AssertThrow(!(friction_problem && viscoplasticity.implicit()),
                 ExcMessage(
                   "Viscoplasticity/Time integration = implicit is not "
-                  "combined with Tresca friction in this release (the "
-                  "friction bound is up to "
+                  "combined with friction or unilateral contact in this "
+                  "release (the friction bound or coefficient is up to "
                   + to_text(g_max)
                   + "). Use the explicit step with a Time step within its "
-                    "stability limit, or a frictionless contact "
+                    "stability limit, or a frictionless bilateral contact "
                     "(Contact/Friction bound = 0)."));
     return friction_problem.get();
   }
@@ -150,6 +152,8 @@ namespace VPContact
                                 boundary_conditions.contact_boundary_ids(),
                                 locally_owned_dofs,
                                 locally_relevant_dofs);
+        // With unilateral contact, every node in contact and none sticking.
+        make_constraints(0., nullptr, false);
         const auto  free  = rigid_motion_check.free_motions(constraints);
         const auto &parts = rigid_motion_check.parts();
         friction_problem->set_motion_free_when_all_slip(
@@ -228,7 +232,8 @@ namespace VPContact
   template <int dim>
   void
   DisplacementProblem<dim>::make_constraints(const double           time,
-                                             const LA::MPI::Vector *previous)
+                                             const LA::MPI::Vector *previous,
+                                             const bool             with_stick)
   {
     // On the displacement block only: the damage problem keeps the hanging
     // node constraints of its own block (DamageSystem).
@@ -238,9 +243,10 @@ namespace VPContact
     boundary_conditions.make_constraints(dof_handler,
                                          constraints,
                                          time,
-                                         previous);
+                                         previous,
+                                         !friction.unilateral());
     if (friction_problem)
-      friction_problem->add_stick_constraints(constraints);
+      friction_problem->add_constraints(constraints, previous, with_stick);
     constraints.close();
   }
 

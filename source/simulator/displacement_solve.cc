@@ -42,7 +42,10 @@ namespace VPContact
   {
     if (friction_problem)
       friction_problem->begin_step(time);
-    if (boundary_conditions.has_prescribed_displacement())
+    // Prescribed displacements and the gap of unilateral contact give
+    // inhomogeneous constraints on du that change from step to step.
+    if (boundary_conditions.has_prescribed_displacement()
+        || friction.unilateral())
       make_constraints(time, &solution);
 
     // Without friction one linear solve. With friction, the primal-dual
@@ -171,33 +174,20 @@ namespace VPContact
   DisplacementProblem<dim>::friction_sets_settled(const double       time,
                                                   const unsigned int iteration)
   {
-    // The next stick and slip sets from the multipliers of this solve.
-    // The matrix changes when a node enters or leaves the stick set (its
-    // constraints change) or, in 3D, when a slip direction turns (its slip
-    // stiffness changes); then it is reassembled.
+    // The next contact, stick and slip sets from the multipliers of this
+    // solve. The matrix changes when a node enters or leaves the contact or
+    // the stick set (its constraints change) or, in 3D, when a slip
+    // direction turns or a Coulomb bound moves (its slip stiffness
+    // changes); then it is reassembled.
     const auto changes = friction_problem->update(increment,
+                                                  solution,
                                                   material.youngs_modulus(),
                                                   assemble_contact_residual());
     if (changes.n_stick_changed > 0)
       check_held_while_slipping(time);
     if (changes.n_changed == 0)
       return true;
-    AssertThrow(
-      iteration < friction.max_iterations(),
-      ExcMessage(
-        "The stick/slip active set did not converge at t = " + to_text(time)
-        + ": after " + std::to_string(iteration) + " iterations "
-        + std::to_string(changes.n_changed)
-        + " contact node(s) still change set or slip direction. Raise Contact/Maximum active "
-          "set iterations = "
-        + std::to_string(friction.max_iterations())
-        + ", try another Contact/Complementarity factor, or (3D) raise "
-          "Contact/Slip direction tolerance = "
-        + to_text(friction.direction_tolerance())
-        + " if a displacement solver's tolerance keeps the directions "
-          "from settling. The output up "
-          "to the previous step is complete in "
-        + output_writer.directory() + "."));
+    check_sets_settle(time, iteration, changes);
     if (changes.n_stick_changed > 0)
       {
         make_constraints(time, &solution);
@@ -214,6 +204,49 @@ namespace VPContact
         displacement.solver.matrix_changed();
       }
     return false;
+  }
+
+
+
+  template <int dim>
+  void
+  DisplacementProblem<dim>::check_sets_settle(
+    const double                                    time,
+    const unsigned int                              iteration,
+    const typename FrictionActiveSet<dim>::Changes &changes) const
+  {
+    // Stop an active-set iteration that cycles or runs out of iterations,
+    // naming the entries that control it.
+    AssertThrow(
+      changes.cycle_length == 0,
+      ExcMessage(
+        "The contact active set cycles at t = " + to_text(time) + ": after "
+        + std::to_string(iteration)
+        + " iterations the contact, stick and slip sets are those of "
+        + std::to_string(changes.cycle_length)
+        + " iteration(s) before, so the semismooth Newton iteration will not "
+          "settle. Try another Contact/Complementarity factor (now "
+        + to_text(friction.complementarity_factor())
+        + "), a smaller Time/Time step, or a finer mesh at the boundary "
+          "of the contact zone. The output up to the previous step is "
+          "complete in "
+        + output_writer.directory() + "."));
+    AssertThrow(
+      iteration < friction.max_iterations(),
+      ExcMessage(
+        "The stick/slip active set did not converge at t = " + to_text(time)
+        + ": after " + std::to_string(iteration) + " iterations "
+        + std::to_string(changes.n_changed)
+        + " contact node(s) still change set or slip direction. Raise Contact/Maximum active "
+          "set iterations = "
+        + std::to_string(friction.max_iterations())
+        + ", try another Contact/Complementarity factor, or (3D) raise "
+          "Contact/Slip direction tolerance = "
+        + to_text(friction.direction_tolerance())
+        + " if a displacement solver's tolerance keeps the directions "
+          "from settling. The output up "
+          "to the previous step is complete in "
+        + output_writer.directory() + "."));
   }
 
 

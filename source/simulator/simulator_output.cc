@@ -143,6 +143,8 @@ namespace VPContact
                      const IndexSet                &relevant_dofs,
                      FieldSources<dim>             &sources)
     {
+      if (fields.empty())
+        return;
       const MPI_Comm communicator = layout.block(0).get_mpi_communicator();
       LA::MPI::BlockVector blocks(layout);
       for (NodalField<dim> &field : fields)

@@ -1,6 +1,7 @@
-// The stick and slip sets of the contact nodes for Tresca friction, and what
-// they do to the linear system: stick nodes are constrained, slip nodes carry
-// a known friction force.
+// The contact and separation, stick and slip sets of the contact nodes for
+// Tresca or Coulomb friction with bilateral or unilateral contact, and what
+// they do to the linear system: contact nodes hold their normal displacement,
+// stick nodes are constrained, slip nodes carry a known friction force.
 #ifndef vpcontact_friction_active_set_h
 #define vpcontact_friction_active_set_h
 
@@ -50,6 +51,22 @@ namespace VPContact
    * ball |lambda_i| <= g_i; it has converged when no node changes set and
    * no slip direction moves by more than the direction tolerance.
    *
+   * With unilateral contact (TrescaFriction::unilateral()) the normal
+   * displacement is not constrained by the boundary conditions but by this
+   * set: a node in contact holds u_i.nu_i = g_0,i (a constraint on its
+   * component d with the largest |nu_d|), a separated node is free and
+   * carries no friction. Its tangent space is the plane normal to nu_i,
+   * within the components the boundary conditions leave free. The normal
+   * multiplier p_i = r_i.nu_i / m_i is the contact pressure -sigma_nu and
+   * d_i = g_0,i - u_i.nu_i the gap; the semismooth Newton step for
+   * p_i >= 0, d_i >= 0, p_i d_i = 0 puts a node in contact where
+   * p_i - c d_i > 0 (Hueber, Stadler and Wohlmuth). A node that comes into
+   * contact starts in the stick set; at t = 0 the nodes with g_0 = 0 are in
+   * contact. With Coulomb's law the bound of each
+   * node is g_i = mu_i max(p_i, 0) from the last solve: the iteration has
+   * converged when, besides the sets, no bound moves by more than the
+   * bound tolerance.
+   *
    * Decisions are taken for every locally relevant node from ghosted
    * vectors, so that a node on a processor boundary is decided alike on
    * every rank that sees it; changes are counted on owned nodes and summed.
@@ -62,28 +79,50 @@ namespace VPContact
     {
       /// Nodes that changed set or slip direction (all ranks).
       unsigned int n_changed = 0;
-      /// Nodes that entered or left the stick set (the constraints change).
+      /// Nodes that entered or left the stick set or the contact set (the
+      /// constraints change).
       unsigned int n_stick_changed = 0;
       /// Nodes whose slip stiffness changed (the matrix changes): the stick
       /// changes, and the direction changes where the tangent space is a
       /// plane.
       unsigned int n_matrix_changed = 0;
+      /// Nodes whose Coulomb bound moved by more than the tolerance.
+      unsigned int n_bounds_moved = 0;
+      /// If the sets after this update are those after an earlier update
+      /// of the step although they changed since: how many updates ago
+      /// (0: no cycle). Set by FrictionProblem::update().
+      unsigned int cycle_length = 0;
     };
 
     /**
-     * Find the contact nodes from @p base_constraints (Dirichlet and normal
-     * constraints, closed) and compute their lumped lengths. All nodes start
-     * in the stick set.
+     * Find the contact nodes from @p base_constraints (Dirichlet and, for
+     * bilateral contact, normal constraints, closed) and compute their
+     * lumped lengths and normals. All nodes start in the stick set;
+     * with unilateral contact, those with an initial gap g_0(x_i, 0) > 0
+     * start separated.
      */
     void
     setup(const DoFHandler<dim>              &dof_handler,
           const AffineConstraints<double>    &base_constraints,
           const std::set<types::boundary_id> &contact_ids,
-          const IndexSet                     &locally_relevant_dofs);
+          const IndexSet                     &locally_relevant_dofs,
+          const TrescaFriction<dim>          &law);
 
-    /// g_i = g(x_i, t) at every node.
+    /// At the start of a step at @p time: the Tresca bounds
+    /// g_i = g(x_i, t) (Coulomb keeps those of the last iterate) and the
+    /// initial gaps g_0(x_i, t).
     void
     set_bounds(const TrescaFriction<dim> &friction, const double time);
+
+    /**
+     * Unilateral contact: u.nu = g_0 at every node in contact, as a
+     * constraint on the increment from the ghosted displacement
+     * @p previous of the last step (nullptr: zero), before the stick
+     * constraints and constraints.close().
+     */
+    void
+    add_contact_constraints(AffineConstraints<double> &constraints,
+                            const LA::MPI::Vector     *previous) const;
 
     /// Add u_f = 0 for every stick node (before constraints.close()).
     void
@@ -111,22 +150,48 @@ namespace VPContact
                           LA::SparseMatrix                &matrix);
 
     /**
-     * Recompute lambda and w from the ghosted @p residual and @p increment
-     * and take the next sets with tresca_decision(), using
-     * c = @p c_factor * @p youngs_modulus / m_i. A slip node keeps its
-     * direction and slip stiffness while its direction moves by at most
-     * @p direction_tolerance.
+     * Recompute p, lambda and w from the ghosted @p residual, @p increment
+     * and last step's displacement @p previous, and take the next sets:
+     * contact or separation (unilateral), then stick or slip with
+     * tresca_decision(), using c = factor * @p youngs_modulus / m_i. A slip
+     * node keeps its direction and slip stiffness while its direction
+     * moves by at most the direction tolerance of @p law.
      */
     Changes
-    update(const LA::MPI::Vector &residual,
-           const LA::MPI::Vector &increment,
-           const double           youngs_modulus,
-           const double           c_factor,
-           const double           direction_tolerance);
+    update(const LA::MPI::Vector     &residual,
+           const LA::MPI::Vector     &increment,
+           const LA::MPI::Vector     &previous,
+           const double               youngs_modulus,
+           const TrescaFriction<dim> &law);
 
     /// Global numbers of stick and slip nodes.
     std::pair<unsigned int, unsigned int>
     count() const;
+
+    /// A fingerprint of the contact, stick and slip sets of all ranks (the
+    /// same on every rank): equal sets give equal fingerprints.
+    unsigned long long
+    fingerprint() const;
+
+    /// What a step of unilateral contact reports (all ranks).
+    struct NormalMeasures
+    {
+      unsigned int n_contact   = 0;
+      unsigned int n_separated = 0;
+      /// The lumped measure of Gamma_C at nodes in contact and at stick
+      /// nodes: lengths in 2D, areas in 3D.
+      double contact_measure = 0;
+      double stick_measure   = 0;
+      double max_pressure    = 0;
+      /// max of (-p)^+ at contact nodes and |p| at separated ones, relative
+      /// to the stress scale of max_violation().
+      double pressure_violation = 0;
+      /// max of |d| at contact nodes and (-d)^+ at separated ones [m].
+      double gap_violation = 0;
+    };
+
+    NormalMeasures
+    normal_measures() const;
 
     /// max_i g_i (all ranks).
     double
@@ -159,6 +224,12 @@ namespace VPContact
      */
     void
     fill_output(LA::MPI::Vector &status, LA::MPI::Vector &traction) const;
+
+    /// The contact pressure p_i into the x component and the gap d_i into
+    /// the y component of the owned contact nodes of @p normal (zeroed
+    /// first).
+    void
+    fill_normal_output(LA::MPI::Vector &normal) const;
 
     bool
     empty() const;
@@ -204,9 +275,18 @@ namespace VPContact
       /// |r_i| / m_i: the whole contact traction, normal part included.
       double        traction = 0;
       TangentVector slip;
-      ContactStatus status = ContactStatus::stick;
-      TangentVector direction;
-      double        slip_stiffness = 0;
+      /// The unit normal nu_i, the component d it constrains in contact
+      /// (unilateral), the initial gap, the pressure p_i, the gap d_i, the
+      /// friction coefficient mu_i (Coulomb).
+      Tensor<1, dim> normal;
+      unsigned int   normal_component = 0;
+      double         initial_gap      = 0;
+      double         pressure         = 0;
+      double         gap              = 0;
+      double         mu               = 0;
+      ContactStatus  status           = ContactStatus::stick;
+      TangentVector  direction;
+      double         slip_stiffness = 0;
       /// The direction and slip stiffness the matrix holds.
       TangentVector assembled_direction;
       double        assembled_stiffness = 0;
@@ -232,8 +312,38 @@ namespace VPContact
               const AffineConstraints<double>               &base_constraints,
               Node                                          &node) const;
 
+    /// With unilateral contact: the tangent space of @p node from its
+    /// normal, within what @p base_constraints leave free; false if they
+    /// hold its normal component.
+    bool
+    make_unilateral_node(const AffineConstraints<double> &base_constraints,
+                         Node                            &node) const;
+
+    /// p, d, lambda, w and |r|/m of every node from the ghosted residual,
+    /// increment and last step's displacement; returns the largest
+    /// Coulomb bound mu max(p, 0) of all ranks.
+    double
+    measure(const LA::MPI::Vector &residual,
+            const LA::MPI::Vector &increment,
+            const LA::MPI::Vector &previous);
+
+    /// The next normal state of @p node from its p and d (unilateral):
+    /// whether it changed between contact and separation.
+    bool
+    decide_contact(Node &node, const double c) const;
+
+    /// The bound of @p node for this iterate: g (Tresca) or mu max(p, 0)
+    /// (Coulomb); whether it moved by more than the tolerance of @p law
+    /// relative to @p scale.
+    bool
+    update_bound(Node                      &node,
+                 const TrescaFriction<dim> &law,
+                 const double               scale) const;
+
     std::vector<Node> nodes;
     MPI_Comm          communicator = MPI_COMM_WORLD;
+    bool              unilateral   = false;
+    bool              coulomb      = false;
   };
 } // namespace VPContact
 

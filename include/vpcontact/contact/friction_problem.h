@@ -1,6 +1,6 @@
-// The Tresca friction problem on the contact boundary: its active set, the
-// residual that gives the friction multipliers, and what a run reports of
-// it. Built only in scenes with a friction bound g > 0.
+// The contact problem on the contact boundary: its active set of contact,
+// stick and slip, the residual that gives the multipliers, and what a run
+// reports of it. Built in scenes with friction or unilateral contact.
 #ifndef vpcontact_friction_problem_h
 #define vpcontact_friction_problem_h
 
@@ -25,11 +25,13 @@ namespace VPContact
   using namespace dealii;
 
   /**
-   * Tresca friction with bilateral contact, solved by the primal-dual
-   * active set of step-41/42 around the displacement solves: the stick and
-   * slip sets (FrictionActiveSet), the cells that hold a contact node (where
-   * the residual r = b - A(du) is assembled: its tangential part at a
-   * contact node is the friction multiplier), and the iteration counts and
+   * Tresca or Coulomb friction with bilateral or unilateral contact,
+   * solved by the primal-dual active set of step-41/42 around the
+   * displacement solves: the contact, stick and slip sets
+   * (FrictionActiveSet), the cells that hold a contact node (where the
+   * residual r = b - A(du) is assembled: at a contact node its normal part
+   * is the contact pressure, its tangential part the friction
+   * multiplier), and the iteration counts and
    * violations a run reports. The DisplacementProblem owns it: it calls
    * begin_step(), then, after each solve, assembles the residual on
    * residual_cells() and calls update() until no node changes set.
@@ -58,9 +60,13 @@ namespace VPContact
     void
     clear();
 
-    /// The stick nodes' tangential constraints.
+    /// The normal constraints of the nodes in contact (unilateral, from
+    /// the ghosted displacement @p previous of the last step; nullptr:
+    /// zero) and, @p with_stick, the stick nodes' tangential constraints.
     void
-    add_stick_constraints(AffineConstraints<double> &constraints) const;
+    add_constraints(AffineConstraints<double> &constraints,
+                    const LA::MPI::Vector     *previous,
+                    const bool                 with_stick) const;
 
     /// The friction bounds at @p time; no iteration yet.
     void
@@ -95,6 +101,7 @@ namespace VPContact
      */
     typename FrictionActiveSet<dim>::Changes
     update(const LA::MPI::Vector &increment,
+           const LA::MPI::Vector &previous,
            const double           youngs_modulus,
            const LA::MPI::Vector &assembled_residual);
 
@@ -166,9 +173,19 @@ namespace VPContact
     std::vector<CellIterator> contact_cells;
     /// A ghosted copy of r.
     LA::MPI::Vector residual;
-    unsigned int    last_iterations   = 0;
-    double          largest_violation = 0;
-    std::string     free_when_all_slip;
+    /// The fingerprints of the sets at the start of the step and after
+    /// each update(), to find a cycle.
+    std::vector<unsigned long long> step_fingerprints;
+    unsigned int                    last_iterations            = 0;
+    double                          largest_violation          = 0;
+    double                          largest_pressure_violation = 0;
+    double                          largest_gap_violation      = 0;
+
+    /// Unilateral contact: the step's columns of the contact and
+    /// separation sets and its part of the screen @p line.
+    void
+    add_normal_statistics(Statistics &statistics, std::string &line);
+    std::string free_when_all_slip;
   };
 } // namespace VPContact
 

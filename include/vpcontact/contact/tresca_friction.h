@@ -1,6 +1,8 @@
-// Tresca friction on the contact boundary: the friction bound g(x, t) of the
-// paper's condition (3), the parameters of the active set iteration, and the
-// pointwise decision stick/slip of the primal-dual active set method.
+// The contact law on the contact boundary: bilateral (the paper's) or
+// unilateral contact with an initial gap, Tresca friction with the bound
+// g(x, t) of the paper's condition (3) or Coulomb friction g = mu |sigma_nu|,
+// the parameters of the active set iteration, and the pointwise decision
+// stick/slip of the primal-dual active set method.
 #ifndef vpcontact_tresca_friction_h
 #define vpcontact_tresca_friction_h
 
@@ -12,6 +14,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -22,9 +25,10 @@ namespace VPContact
   /// The state of a contact node, as written to the output (0, 1, 2).
   enum class ContactStatus
   {
-    none  = 0,
-    stick = 1,
-    slip  = 2
+    none      = 0,
+    stick     = 1,
+    slip      = 2,
+    separated = 3
   };
 
   /**
@@ -64,13 +68,22 @@ namespace VPContact
                   const double          c);
 
   /**
-   * Section "Contact": the friction bound g(x, t) >= 0 on Gamma_C and the
-   * controls of the active set iteration.
+   * Section "Contact": the normal condition (bilateral u.nu = 0, or
+   * unilateral u.nu <= g_0 with the foundation's normal nu and the initial
+   * gap g_0(x, t)), the friction law (Tresca with the bound g(x, t) >= 0,
+   * or Coulomb with g = mu(x) |sigma_nu|) on Gamma_C, and the controls of
+   * the active set iteration.
    */
   template <int dim>
   class TrescaFriction
   {
   public:
+    enum class FrictionLaw
+    {
+      tresca,
+      coulomb
+    };
+
     static void
     declare_parameters(ParameterHandler &prm);
 
@@ -78,18 +91,52 @@ namespace VPContact
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * Stop with a message naming Contact/Friction bound if g < 0 (or not
-     * finite) at a vertex of the faces with @p contact_ids at one of the
-     * @p times. Returns the largest g found there (0: frictionless).
+     * Stop with a message naming Contact/Friction bound (Coulomb: Friction
+     * coefficient) if g < 0 (mu < 0) or not finite at a vertex of the faces
+     * with @p contact_ids at one of the @p times. Returns the largest value
+     * found there (0: frictionless).
      */
     double
     check_bound(const parallel::TriangulationBase<dim> &triangulation,
                 const std::set<types::boundary_id>     &contact_ids,
                 const std::vector<double>              &times) const;
 
-    /// g(x, t).
+    /// g(x, t) (Tresca).
     double
     bound(const Point<dim> &point, const double time) const;
+
+    /// Whether the normal condition is unilateral (Signorini).
+    bool
+    unilateral() const;
+
+    FrictionLaw
+    friction_law() const;
+
+    /// mu(x) (Coulomb).
+    double
+    coefficient(const Point<dim> &point) const;
+
+    /// g_0(x, t): the distance from the body to the foundation along nu at
+    /// the start (unilateral).
+    double
+    initial_gap(const Point<dim> &point, const double time) const;
+
+    /// The foundation's unit normal (pointing from the body into the
+    /// foundation) if the scene gives one; otherwise each node takes the
+    /// body's outward normal.
+    const std::optional<Tensor<1, dim>> &
+    foundation_normal() const;
+
+    /// Whether the contact boundary needs an active set at all: unilateral
+    /// contact, or friction somewhere (@p g_max, the largest Tresca bound,
+    /// or the largest Coulomb coefficient on the contact boundary > 0).
+    bool
+    needs_active_set(const double largest_bound) const;
+
+    /// How far the Coulomb bounds may move, relative to the largest, in a
+    /// converged iteration.
+    double
+    bound_tolerance() const;
 
     unsigned int
     max_iterations() const;
@@ -108,7 +155,21 @@ namespace VPContact
     void
     check_iteration_constants() const;
 
+    /// Declare the entries of the normal condition and of Coulomb's law.
+    static void
+    declare_law_parameters(ParameterHandler &prm);
+
+    /// Read the entries of the unilateral condition and of Coulomb's law.
+    void
+    parse_law(ParameterHandler &prm);
+
     std::unique_ptr<FunctionParser<dim>> friction_bound;
+    std::unique_ptr<FunctionParser<dim>> friction_coefficient;
+    std::unique_ptr<FunctionParser<dim>> gap;
+    std::optional<Tensor<1, dim>>        foundation;
+    bool                                 is_unilateral = false;
+    FrictionLaw                          law           = FrictionLaw::tresca;
+    double                               bound_tol     = 1e-10;
     unsigned int                         iteration_cap = 50;
     double                               c_factor      = 1.;
     double                               direction_tol = 1e-10;

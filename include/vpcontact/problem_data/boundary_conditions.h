@@ -61,13 +61,17 @@ namespace VPContact
      * constraints). The unknown of a time step is the displacement increment
      * u_n - u_{n-1}: on the prescribed part it is g(x, @p time) minus the
      * nodal values of @p previous_displacement (a ghosted vector; nullptr
-     * stands for zero); all other constraints are homogeneous.
+     * stands for zero); all other constraints are homogeneous. The contact
+     * part's normal constraint u.nu = 0 is added only for
+     * @p bilateral_contact (unilateral contact leaves the normal to the
+     * contact's active set).
      */
     void
     make_constraints(const DoFHandler<dim>     &dof_handler,
                      AffineConstraints<double> &constraints,
                      const double               time,
-                     const LA::MPI::Vector     *previous_displacement) const;
+                     const LA::MPI::Vector     *previous_displacement,
+                     const bool                 bilateral_contact) const;
 
     /// Whether the constraints change with time (prescribed displacements).
     bool

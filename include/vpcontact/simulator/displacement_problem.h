@@ -150,9 +150,12 @@ namespace VPContact
 
     /// The constraints of du at @p time, inhomogeneous ones from the
     /// ghosted displacement @p previous (u_{n-1}) where there are
-    /// prescribed displacements.
+    /// prescribed displacements or unilateral contact; the stick nodes'
+    /// only @p with_stick.
     void
-    make_constraints(const double time, const LA::MPI::Vector *previous);
+    make_constraints(const double           time,
+                     const LA::MPI::Vector *previous,
+                     const bool             with_stick = true);
 
     void
     compute_cell_stresses(Vector<double>              &von_mises,
@@ -311,6 +314,14 @@ namespace VPContact
     share_increment();
     bool
     friction_sets_settled(const double time, const unsigned int iteration);
+
+    /// Stop if the active set cycles or does not settle in the entries'
+    /// number of iterations.
+    void
+    check_sets_settle(
+      const double                                    time,
+      const unsigned int                              iteration,
+      const typename FrictionActiveSet<dim>::Changes &changes) const;
     const LA::MPI::Vector &
     assemble_contact_residual();
 
@@ -451,7 +462,10 @@ namespace VPContact
     TrescaFriction<dim>                   friction;
     /// Tresca friction (scenes with a contact boundary and a bound g > 0).
     std::unique_ptr<FrictionProblem<dim>> friction_problem;
-    IncrementPredictor                    increment_predictor;
+    /// The largest friction bound or Coulomb coefficient on the contact
+    /// boundary over the run (0: frictionless).
+    double             largest_friction = 0;
+    IncrementPredictor increment_predictor;
 
     /// Constraints on the increment du of the current step (displacement
     /// block).
