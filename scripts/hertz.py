@@ -5,7 +5,10 @@ the contact half-width and the largest pressure against Hertz's
 a = sqrt(4 P R (1 - nu^2) / (pi E)) and p_max = 2 P / (pi a), with the
 resolution of the half-width (half a node spacing) and the change of the
 pressure from mesh to mesh, written between the markers of
-doc/contact.md.
+doc/contact.md; and the 3D slice with Coulomb friction
+(prm/hertz_cylinder_3d.prm) on its three meshes: contact, stick and slip
+nodes and the active-set iterations, written between the markers of
+doc/friction.md.
 
 Usage: scripts/hertz"""
 import math
@@ -23,17 +26,22 @@ MESHES = [("hertz_cylinder_coarse", 0.008), ("hertz_cylinder_medium", 0.004),
           ("hertz_cylinder", 0.002)]
 
 
-def run(mesh, work):
-    text = (f"include {ROOT}/prm/hertz_cylinder.prm\n"
+MESHES_3D = [("hertz_cylinder_3d_coarse", 0.016),
+             ("hertz_cylinder_3d_medium", 0.008), ("hertz_cylinder_3d", 0.004)]
+
+
+def run(mesh, work, scene="hertz_cylinder"):
+    text = (f"include {ROOT}/prm/{scene}.prm\n"
             "subsection Geometry\n"
             f"  set Mesh file = {ROOT}/prm/meshes/{mesh}.msh\nend\n"
             "subsection Output\n  set Output every = 0\nend\n")
     rows, seconds = run_scene(mesh, text, work)
     last = rows[-1]
     return dict(cells=int(last["cells"]), dofs=int(last["dofs"]),
-                a=float(last["contact_length"]),
+                a=float(last.get("contact_length") or last["contact_area"]),
                 p=float(last["max_contact_pressure"]),
                 nodes=int(last["contact_nodes"]),
+                stick=int(last["stick_nodes"]), slip=int(last["slip_nodes"]),
                 its=int(last["active_set_iterations"]), seconds=seconds)
 
 
@@ -61,15 +69,32 @@ def table(results):
     return lines
 
 
+def table_3d(results):
+    lines = ["| mesh | h at the contact | cells | dofs | nodes in contact | "
+             "stick / slip | active-set iterations | p_max | run [s] |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for mesh, h, r in results:
+        lines.append(f"| {mesh} | {h} | {r['cells']} | {r['dofs']} | "
+                     f"{r['nodes']} | {r['stick']} / {r['slip']} | "
+                     f"{r['its']} | {r['p']:.3f} | {r['seconds']:.1f} |")
+    return lines
+
+
 def main():
     results = []
     with tempfile.TemporaryDirectory() as work:
         for mesh, h in MESHES:
             results.append((mesh, h, run(mesh, work)))
             print(table(results)[-1], flush=True)
+        results_3d = []
+        for mesh, h in MESHES_3D:
+            results_3d.append((mesh, h, run(mesh, work, "hertz_cylinder_3d")))
+            print(table_3d(results_3d)[-1], flush=True)
     doc = os.path.join(ROOT, "doc", "contact.md")
     write_block(doc, "hertz", table(results))
-    print(f"wrote {doc}")
+    doc_3d = os.path.join(ROOT, "doc", "friction.md")
+    write_block(doc_3d, "hertz", table_3d(results_3d))
+    print(f"wrote {doc} and {doc_3d}")
 
 
 if __name__ == "__main__":
