@@ -10,6 +10,10 @@ doc/contact.md; and the 3D slice with Coulomb friction
 nodes and the active-set iterations, written between the markers of
 doc/friction.md.
 
+And Cattaneo-Mindlin (prm/cattaneo_mindlin.prm) at nu = 0.3 and 0.45: the
+stick zone's half-width against c = a sqrt(1 - Q / (mu P)) with the
+run's own a, P and Q, into doc/contact.md.
+
 Usage: scripts/hertz"""
 import math
 import os
@@ -69,6 +73,41 @@ def table(results):
     return lines
 
 
+def run_cattaneo(nu, work):
+    text = (f"include {ROOT}/prm/cattaneo_mindlin.prm\n"
+            "subsection Geometry\n"
+            f"  set Mesh file = {ROOT}/prm/meshes/cattaneo_mindlin.msh\nend\n"
+            f"subsection Material\n  set Poisson's ratio = {nu}\nend\n"
+            "subsection Output\n  set Output every = 0\nend\n")
+    rows, seconds = run_scene(f"cattaneo_mindlin_{nu}", text, work)
+    normal = [r for r in rows if abs(float(r["time"]) - 1) < 1e-9][0]
+    last = rows[-1]
+    P, Q = float(last["normal_force"]), float(last["friction_force"])
+    a = float(last["contact_length"]) / 2
+    c = float(last["stick_length"]) / 2
+    return dict(nu=nu, P=P, Q=Q, a=a, c=c, mu=0.3,
+                normal=float(normal["stick_length"])
+                / float(normal["contact_length"]),
+                its=max(int(r["active_set_iterations"]) for r in rows[1:]),
+                seconds=seconds)
+
+
+def table_cattaneo(results):
+    lines = ["| ν | P | Q | a | stick ratio after the normal load | c | "
+             "c/a | Cattaneo–Mindlin sqrt(1 − Q/(μP)) | difference | "
+             "most active-set iterations in a step | run [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in results:
+        ratio = r["c"] / r["a"]
+        closed = math.sqrt(1 - r["Q"] / (r["mu"] * r["P"]))
+        lines.append(f"| {r['nu']} | {r['P']:.3f} | {r['Q']:.3f} | "
+                     f"{r['a']:.4f} | {r['normal']:.3f} | {r['c']:.4f} | "
+                     f"{ratio:.3f} | {closed:.3f} | "
+                     f"{100 * (ratio / closed - 1):+.1f} % | {r['its']} | "
+                     f"{r['seconds']:.1f} |")
+    return lines
+
+
 def table_3d(results):
     lines = ["| mesh | h at the contact | cells | dofs | nodes in contact | "
              "stick / slip | active-set iterations | p_max | run [s] |",
@@ -90,8 +129,13 @@ def main():
         for mesh, h in MESHES_3D:
             results_3d.append((mesh, h, run(mesh, work, "hertz_cylinder_3d")))
             print(table_3d(results_3d)[-1], flush=True)
+        results_cm = []
+        for nu in (0.3, 0.45):
+            results_cm.append(run_cattaneo(nu, work))
+            print(table_cattaneo(results_cm)[-1], flush=True)
     doc = os.path.join(ROOT, "doc", "contact.md")
     write_block(doc, "hertz", table(results))
+    write_block(doc, "hertz (Cattaneo–Mindlin)", table_cattaneo(results_cm))
     doc_3d = os.path.join(ROOT, "doc", "friction.md")
     write_block(doc_3d, "hertz", table_3d(results_3d))
     print(f"wrote {doc} and {doc_3d}")

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace VPContact
 {
@@ -130,6 +131,7 @@ namespace VPContact
     // The pressure's violations are relative to the stress scale of
     // max_violation(), the gap's are lengths.
     NormalMeasures measures;
+    Tensor<1, dim> friction_force;
     double         stress_scale = 0;
     for (const auto &node : nodes)
       if (node.owned)
@@ -155,6 +157,8 @@ namespace VPContact
             measures.stick_measure += node.length;
           measures.max_pressure
             = std::max(measures.max_pressure, node.pressure);
+          measures.normal_force += node.length * node.pressure;
+          friction_force += node.length * node.vector(node.lambda);
           measures.pressure_violation
             = std::max(measures.pressure_violation, -node.pressure / scale);
           measures.gap_violation
@@ -169,6 +173,11 @@ namespace VPContact
       = Utilities::MPI::sum(measures.stick_measure, communicator);
     measures.max_pressure
       = Utilities::MPI::max(measures.max_pressure, communicator);
+    measures.normal_force
+      = Utilities::MPI::sum(measures.normal_force, communicator);
+    for (unsigned int d = 0; d < dim; ++d)
+      friction_force[d] = Utilities::MPI::sum(friction_force[d], communicator);
+    measures.tangential_force = friction_force.norm();
     measures.pressure_violation
       = Utilities::MPI::max(measures.pressure_violation, communicator);
     measures.gap_violation
@@ -190,6 +199,37 @@ namespace VPContact
           normal(node.dofs[1]) = node.gap;
         }
     normal.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  bool
+  FrictionActiveSet<dim>::keep_one_stick()
+  {
+    // The smallest excess over all ranks, then the lowest dof that has it:
+    // every rank picks the same node.
+    double excess = std::numeric_limits<double>::max();
+    for (const auto &node : nodes)
+      if (node.owned && node.status == ContactStatus::slip)
+        excess = std::min(excess, node.excess);
+    excess = Utilities::MPI::min(excess, communicator);
+    if (excess == std::numeric_limits<double>::max())
+      return false;
+    types::global_dof_index dof = numbers::invalid_dof_index;
+    for (const auto &node : nodes)
+      if (node.owned && node.status == ContactStatus::slip
+          && node.excess == excess)
+        dof = std::min(dof, node.dofs[0]);
+    dof = Utilities::MPI::min(dof, communicator);
+    for (auto &node : nodes)
+      if (node.dofs[0] == dof)
+        {
+          node.status         = ContactStatus::stick;
+          node.direction      = TangentVector();
+          node.slip_stiffness = 0;
+        }
+    return true;
   }
 
 

@@ -356,6 +356,7 @@ namespace VPContact
           continue;
         const bool moved = update_bound(node, law, bound_scale);
         const auto next  = tresca_decision(node.lambda, node.slip, node.g, c);
+        node.excess      = (node.lambda + c * node.slip).norm() - node.g;
         const bool stick_changed = (next.status != node.status);
         const bool turned        = next.status == ContactStatus::slip
                             && (stick_changed

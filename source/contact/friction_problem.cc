@@ -262,6 +262,15 @@ namespace VPContact
 
 
   template <int dim>
+  bool
+  FrictionProblem<dim>::keep_one_stick()
+  {
+    return active_set.keep_one_stick();
+  }
+
+
+
+  template <int dim>
   unsigned int
   FrictionProblem<dim>::n_stick_nodes() const
   {
@@ -329,6 +338,8 @@ namespace VPContact
     statistics.add_value("contact_" + measure, measures.contact_measure);
     statistics.add_value("stick_" + measure, measures.stick_measure);
     statistics.add_value("max_contact_pressure", measures.max_pressure);
+    statistics.add_value("normal_force", measures.normal_force);
+    statistics.add_value("friction_force", measures.tangential_force);
     statistics.add_value("pressure_violation", measures.pressure_violation);
     statistics.add_value("gap_violation", measures.gap_violation);
     largest_pressure_violation

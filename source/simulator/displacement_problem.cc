@@ -390,16 +390,28 @@ namespace VPContact
 
   template <int dim>
   void
-  DisplacementProblem<dim>::check_held_while_slipping(const double time) const
+  DisplacementProblem<dim>::check_held_while_slipping(const double time)
   {
     // With no stick node left, the contact boundary holds the body only in
     // its normal direction, and the friction force g on it is fixed: a
     // rigid motion that the other constraints leave free is then free in
     // the next solve too, whose matrix is singular and whose answer, if
-    // any, is a body that slides away. Stop before it, saying why.
+    // any, is a body that slides away. An iterate may pass through such
+    // sets on its way to sets that hold the body (Coulomb's bounds move
+    // with the pressure): the first time in a row, the node nearest to
+    // sticking is kept in the stick set; the second time the load is more
+    // than friction holds. Stop then, saying why.
     const std::string &motion = friction_problem->motion_free_when_all_slip();
     if (motion.empty() || friction_problem->n_stick_nodes() > 0)
-      return;
+      {
+        kept_one_stick = false;
+        return;
+      }
+    if (!kept_one_stick && friction_problem->keep_one_stick())
+      {
+        kept_one_stick = true;
+        return;
+      }
     const double k = time_discretization.step_size();
     AssertThrow(
       false,

@@ -56,6 +56,7 @@ namespace VPContact
     // step) runs once, in the first iteration; nothing it reads changes in
     // the later ones (see solve_step()).
     last_linear_iterations = 0;
+    kept_one_stick         = false;
     // The first start vector: the increments of the last steps
     // extrapolated (see IncrementPredictor); the active-set iterations of
     // a step then start from the previous iterate.

@@ -62,10 +62,10 @@ namespace VPContact
    * p_i >= 0, d_i >= 0, p_i d_i = 0 puts a node in contact where
    * p_i - c d_i > 0 (Hueber, Stadler and Wohlmuth). A node that comes into
    * contact starts in the stick set; at t = 0 the nodes with g_0 = 0 are in
-   * contact. With Coulomb's law the bound of each
-   * node is g_i = mu_i max(p_i, 0) from the last solve: the iteration has
-   * converged when, besides the sets, no bound moves by more than the
-   * bound tolerance.
+   * contact. With Coulomb's law the bound of each node is
+   * g_i = mu_i max(p_i, 0) from the last solve: the iteration has converged
+   * when, besides the sets, no bound moves by more than the bound
+   * tolerance.
    *
    * Decisions are taken for every locally relevant node from ghosted
    * vectors, so that a node on a processor boundary is decided alike on
@@ -155,7 +155,8 @@ namespace VPContact
      * contact or separation (unilateral), then stick or slip with
      * tresca_decision(), using c = factor * @p youngs_modulus / m_i. A slip
      * node keeps its direction and slip stiffness while its direction
-     * moves by at most the direction tolerance of @p law.
+     * moves by at most the direction tolerance of @p law. Coulomb's bounds
+     * follow the pressures of this iterate.
      */
     Changes
     update(const LA::MPI::Vector     &residual,
@@ -167,6 +168,12 @@ namespace VPContact
     /// Global numbers of stick and slip nodes.
     std::pair<unsigned int, unsigned int>
     count() const;
+
+    /// Put the slip node with the smallest |lambda + c w| - g of the last
+    /// update() (the lowest global dof among equals) into the stick set, on
+    /// every rank that sees it; false if no node slips.
+    bool
+    keep_one_stick();
 
     /// A fingerprint of the contact, stick and slip sets of all ranks (the
     /// same on every rank): equal sets give equal fingerprints.
@@ -183,6 +190,11 @@ namespace VPContact
       double contact_measure = 0;
       double stick_measure   = 0;
       double max_pressure    = 0;
+      /// sum_i m_i p_i over the nodes in contact: the normal force the
+      /// foundation carries (per unit thickness in 2D), and
+      /// |sum_i m_i lambda_i|, the size of the net friction force.
+      double normal_force     = 0;
+      double tangential_force = 0;
       /// max of (-p)^+ at contact nodes and |p| at separated ones, relative
       /// to the stress scale of max_violation().
       double pressure_violation = 0;
@@ -284,9 +296,11 @@ namespace VPContact
       double         pressure         = 0;
       double         gap              = 0;
       double         mu               = 0;
-      ContactStatus  status           = ContactStatus::stick;
-      TangentVector  direction;
-      double         slip_stiffness = 0;
+      /// |lambda + c w| - g of the last decision: how far from sticking.
+      double        excess = 0;
+      ContactStatus status = ContactStatus::stick;
+      TangentVector direction;
+      double        slip_stiffness = 0;
       /// The direction and slip stiffness the matrix holds.
       TangentVector assembled_direction;
       double        assembled_stiffness = 0;

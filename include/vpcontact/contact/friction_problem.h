@@ -117,6 +117,11 @@ namespace VPContact
     const std::string &
     motion_free_when_all_slip() const;
 
+    /// Put the slip node nearest to sticking (smallest |lambda + c w| - g)
+    /// back into the stick set; false if there is no slip node.
+    bool
+    keep_one_stick();
+
     /// The number of stick nodes (all ranks).
     unsigned int
     n_stick_nodes() const;

@@ -420,7 +420,7 @@ namespace VPContact
     /// Stop with a message if no contact node sticks and the other
     /// constraints leave the body a rigid motion.
     void
-    check_held_while_slipping(const double time) const;
+    check_held_while_slipping(const double time);
     void
     measure_body();
     void
@@ -464,7 +464,10 @@ namespace VPContact
     std::unique_ptr<FrictionProblem<dim>> friction_problem;
     /// The largest friction bound or Coulomb coefficient on the contact
     /// boundary over the run (0: frictionless).
-    double             largest_friction = 0;
+    double largest_friction = 0;
+    /// Whether the last active-set iteration kept a node in the stick set
+    /// that would have slipped (check_held_while_slipping()).
+    bool               kept_one_stick = false;
     IncrementPredictor increment_predictor;
 
     /// Constraints on the increment du of the current step (displacement
