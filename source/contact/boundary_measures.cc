@@ -6,63 +6,88 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
 
+#include <functional>
+
 namespace VPContact
 {
-  // The lumped length m_i = int_{Gamma_C} phi_i ds of every contact
-  // vertex, at its x-component dof, as a ghosted vector.
+  namespace
+  {
+    // int_{Gamma_C} phi_i w_d(n) ds at every dof i of component d of the
+    // vertices of the faces with @p contact_ids (trapezoidal rule on each
+    // face, w_d(n) = @p weight(d, n) with n the face's outward normal), as a
+    // ghosted vector. The vector accumulates into ghost entries, which
+    // compress() sends to their owners.
+    template <int dim>
+    LA::MPI::Vector
+    lumped_integrals(
+      const DoFHandler<dim>              &dof_handler,
+      const std::set<types::boundary_id> &contact_ids,
+      const IndexSet                     &relevant,
+      const std::function<double(unsigned int, const Tensor<1, dim> &)> &weight)
+    {
+      const auto     &fe           = dof_handler.get_fe();
+      const MPI_Comm  communicator = dof_handler.get_communicator();
+      LA::MPI::Vector sums;
+      sums.reinit(dof_handler.locally_owned_dofs(),
+                  relevant,
+                  communicator,
+                  true);
+      const Quadrature<dim - 1> face_quadrature
+        = fe.reference_cell()
+            .face_reference_cell(0)
+            .template get_gauss_type_quadrature<dim - 1>(2);
+      FEFaceValues<dim> fe_face_values(
+        get_default_linear_mapping(dof_handler.get_triangulation()),
+        fe,
+        face_quadrature,
+        update_values | update_JxW_values | update_normal_vectors);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && contact_ids.count(face->boundary_id()))
+              {
+                fe_face_values.reinit(cell, face);
+                cell->get_dof_indices(dof_indices);
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  {
+                    const unsigned int d
+                      = fe.system_to_component_index(i).first;
+                    double integral = 0;
+                    for (const unsigned int q :
+                         fe_face_values.quadrature_point_indices())
+                      integral += fe_face_values.shape_value(i, q)
+                                  * weight(d, fe_face_values.normal_vector(q))
+                                  * fe_face_values.JxW(q);
+                    if (integral != 0.)
+                      sums(dof_indices[i]) += integral;
+                  }
+              }
+      sums.compress(VectorOperation::add);
+      LA::MPI::Vector ghosted(dof_handler.locally_owned_dofs(),
+                              relevant,
+                              communicator);
+      ghosted = sums;
+      return ghosted;
+    }
+  } // namespace
+
+
+
   template <int dim>
   LA::MPI::Vector
   lumped_lengths(const DoFHandler<dim>              &dof_handler,
                  const std::set<types::boundary_id> &contact_ids,
                  const IndexSet                     &locally_relevant_dofs)
   {
-    const auto     &fe           = dof_handler.get_fe();
-    const IndexSet &owned_dofs   = dof_handler.locally_owned_dofs();
-    const MPI_Comm  communicator = dof_handler.get_communicator();
-    const auto      on_contact   = [&](const auto &face) {
-      return face->at_boundary() && contact_ids.count(face->boundary_id()) == 1;
-    };
-    // The lumped length m_i = int_{Gamma_C} phi_i ds (trapezoidal rule on
-    // each face), accumulated at the x-component dof of each vertex. The
-    // vector can write into ghost entries, which compress() sends to their
-    // owners.
-    LA::MPI::Vector lengths;
-    lengths.reinit(owned_dofs, locally_relevant_dofs, communicator, true);
-    const Quadrature<dim - 1> face_quadrature
-      = fe.reference_cell()
-          .face_reference_cell(0)
-          .template get_gauss_type_quadrature<dim - 1>(2);
-    FEFaceValues<dim> fe_face_values(get_default_linear_mapping(
-                                       dof_handler.get_triangulation()),
-                                     fe,
-                                     face_quadrature,
-                                     update_values | update_JxW_values);
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &face : cell->face_iterators())
-          if (on_contact(face))
-            {
-              fe_face_values.reinit(cell, face);
-              cell->get_dof_indices(dof_indices);
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                if (fe.system_to_component_index(i).first == 0)
-                  {
-                    double integral = 0;
-                    for (const unsigned int q :
-                         fe_face_values.quadrature_point_indices())
-                      integral += fe_face_values.shape_value(i, q)
-                                  * fe_face_values.JxW(q);
-                    if (integral != 0.)
-                      lengths(dof_indices[i]) += integral;
-                  }
-            }
-    lengths.compress(VectorOperation::add);
-    LA::MPI::Vector relevant_lengths(owned_dofs,
-                                     locally_relevant_dofs,
-                                     communicator);
-    relevant_lengths = lengths;
-    return relevant_lengths;
+    // m_i at the x-component dof of each vertex.
+    return lumped_integrals<dim>(dof_handler,
+                                 contact_ids,
+                                 locally_relevant_dofs,
+                                 [](const unsigned int d,
+                                    const Tensor<1, dim> &) {
+                                   return d == 0 ? 1. : 0.;
+                                 });
   }
 
 
@@ -73,53 +98,14 @@ namespace VPContact
                  const std::set<types::boundary_id> &contact_ids,
                  const IndexSet                     &locally_relevant_dofs)
   {
-    // As lumped_lengths(), with each component d of the face's normal at
-    // the d-component dof of the vertex.
-    const auto     &fe           = dof_handler.get_fe();
-    const MPI_Comm  communicator = dof_handler.get_communicator();
-    LA::MPI::Vector normals;
-    normals.reinit(dof_handler.locally_owned_dofs(),
-                   locally_relevant_dofs,
-                   communicator,
-                   true);
-    const Quadrature<dim - 1> face_quadrature
-      = fe.reference_cell()
-          .face_reference_cell(0)
-          .template get_gauss_type_quadrature<dim - 1>(2);
-    FEFaceValues<dim> fe_face_values(
-      get_default_linear_mapping(dof_handler.get_triangulation()),
-      fe,
-      face_quadrature,
-      update_values | update_JxW_values | update_normal_vectors);
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && contact_ids.count(face->boundary_id()))
-            {
-              fe_face_values.reinit(cell, face);
-              cell->get_dof_indices(dof_indices);
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                {
-                  const unsigned int d = fe.system_to_component_index(i).first;
-                  if (d >= dim)
-                    continue;
-                  double integral = 0;
-                  for (const unsigned int q :
-                       fe_face_values.quadrature_point_indices())
-                    integral += fe_face_values.shape_value(i, q)
-                                * fe_face_values.normal_vector(q)[d]
-                                * fe_face_values.JxW(q);
-                  if (integral != 0.)
-                    normals(dof_indices[i]) += integral;
-                }
-            }
-    normals.compress(VectorOperation::add);
-    LA::MPI::Vector relevant(dof_handler.locally_owned_dofs(),
-                             locally_relevant_dofs,
-                             communicator);
-    relevant = normals;
-    return relevant;
+    // Each component d of the faces' normal at the d-component dof.
+    return lumped_integrals<dim>(dof_handler,
+                                 contact_ids,
+                                 locally_relevant_dofs,
+                                 [](const unsigned int    d,
+                                    const Tensor<1, dim> &n) {
+                                   return d < dim ? n[d] : 0.;
+                                 });
   }
 
 
