@@ -63,7 +63,6 @@ namespace VPContact
                 // All components of a vertex have one owner.
                 node.owned  = owned_dofs.is_element(node.dofs[0]);
                 node.length = relevant_lengths(node.dofs[0]);
-                node.mu     = coulomb ? law.coefficient(node.position) : 0.;
                 // With unilateral contact, the nodes that touch the
                 // foundation at t = 0 start in contact, the others
                 // separated: a cylinder on a plane starts from one line.
@@ -157,10 +156,13 @@ namespace VPContact
   FrictionActiveSet<dim>::set_bounds(const TrescaFriction<dim> &friction,
                                      const double               time)
   {
-    // Coulomb's bounds stay those of the last iterate: the warm start.
+    // Coulomb's bounds stay those of the last iterate (the warm start);
+    // its coefficient is that of this step's time.
     for (auto &node : nodes)
       {
-        if (!coulomb)
+        if (coulomb)
+          node.mu = friction.coefficient(node.position, time);
+        else
           node.g = friction.bound(node.position, time);
         if (unilateral)
           node.initial_gap = friction.initial_gap(node.position, time);

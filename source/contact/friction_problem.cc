@@ -12,6 +12,38 @@ namespace VPContact
 {
   namespace
   {
+    /**
+     * The period L >= 2 with which the last fingerprints of @p prints run
+     * through the same sets three times over (4 L entries, each equal to
+     * the one L before it, and not all of a period equal), or 0. Coulomb's
+     * bounds converge with the sets held, so a set that keeps coming back
+     * on such a schedule is a cycle of sets and bounds together, not a
+     * path to the solution.
+     */
+    unsigned int
+    repeated_period(const std::vector<unsigned long long> &prints)
+    {
+      constexpr unsigned int repeats = 3, longest = 25;
+      for (unsigned int period = 2;
+           period <= longest && (repeats + 1) * period <= prints.size();
+           ++period)
+        {
+          const auto end      = prints.end();
+          const auto begin    = end - (repeats + 1) * period;
+          bool       periodic = std::equal(begin + period, end, begin);
+          periodic = periodic && std::any_of(end - period, end, [&](auto p) {
+                       return p != *(end - 1);
+                     });
+          if (periodic)
+            return period;
+        }
+      return 0;
+    }
+  } // namespace
+
+
+  namespace
+  {
     // One component of a nodal vector as a scalar field: the status (x
     // component of its vector), the contact pressure and the gap (x and y
     // components of theirs).
@@ -219,7 +251,8 @@ namespace VPContact
     // Sets that come back after they changed: the iteration cycles (the
     // semismooth Newton method converges only locally). With Coulomb's
     // law the bounds move between visits, so a set may come back on the
-    // way to the solution: there it counts only once no bound moves.
+    // way to the solution: there it counts only once no bound moves, or
+    // once the sets have run through the same period several times.
     const unsigned long long print = active_set.fingerprint();
     if (print != step_fingerprints.back() && changes.n_bounds_moved == 0)
       for (unsigned int k = step_fingerprints.size(); k-- > 0;)
@@ -229,6 +262,8 @@ namespace VPContact
             break;
           }
     step_fingerprints.push_back(print);
+    if (changes.cycle_length == 0 && changes.n_bounds_moved > 0)
+      changes.cycle_length = repeated_period(step_fingerprints);
     return changes;
   }
 

@@ -339,8 +339,10 @@ namespace VPContact
 
   template <int dim>
   double
-  TrescaFriction<dim>::coefficient(const Point<dim> &point) const
+  TrescaFriction<dim>::coefficient(const Point<dim> &point,
+                                   const double      time) const
   {
+    friction_coefficient->set_time(time);
     return friction_coefficient->value(point);
   }
 

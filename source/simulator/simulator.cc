@@ -157,6 +157,15 @@ namespace VPContact
 
 
   template <int dim>
+  const DisplacementProblem<dim> &
+  Simulator<dim>::displacement() const
+  {
+    return displacement_problem;
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::run()
   {

@@ -112,9 +112,9 @@ namespace VPContact
     FrictionLaw
     friction_law() const;
 
-    /// mu(x) (Coulomb).
+    /// mu(x, t) (Coulomb).
     double
-    coefficient(const Point<dim> &point) const;
+    coefficient(const Point<dim> &point, const double time) const;
 
     /// g_0(x, t): the distance from the body to the foundation along nu at
     /// the start (unilateral).

@@ -104,11 +104,18 @@ namespace VPContact
     bool
     stopped_for_resume() const;
 
-  private:
-    // simulator.cc
-    /// What the physics objects share of the simulator.
+    /// What the physics objects share of the simulator: also for tools and
+    /// tests that read the state a run ends in.
     SimulatorAccess<dim>
     access() const;
+
+    /// Steps 1-3 and the contact (with its sets and multipliers as the
+    /// last step left them).
+    const DisplacementProblem<dim> &
+    displacement() const;
+
+  private:
+    // simulator.cc
     void
     run_cycle(const unsigned int cycle);
     unsigned int
