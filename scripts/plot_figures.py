@@ -32,7 +32,7 @@ def time_series(folder):
 
 def read(pvtu):
     """Points, cells (n x 4 vertex indices of quadrilaterals or n x 3 of
-    triangles), point arrays by name."""
+    triangles), point arrays by name, cell arrays by name."""
     reader = vtk.vtkXMLPUnstructuredGridReader()
     reader.SetFileName(pvtu)
     reader.Update()
@@ -43,7 +43,10 @@ def read(pvtu):
     data = grid.GetPointData()
     arrays = {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
               for i in range(data.GetNumberOfArrays())}
-    return points, cells, arrays
+    by_cell = grid.GetCellData()
+    cell_arrays = {by_cell.GetArrayName(i): vtk_to_numpy(by_cell.GetArray(i))
+                   for i in range(by_cell.GetNumberOfArrays())}
+    return points, cells, arrays, cell_arrays
 
 
 def statistics(folder):
@@ -88,7 +91,7 @@ def paper_figures(folder, out, scene="paper_fig1", element=""):
     """Figs. 2-4 of the paper; element names a non-default element in the
     titles."""
     t, pvtu = time_series(folder)[-1]
-    points, cells, arrays = read(pvtu)
+    points, cells, arrays, cell_arrays = read(pvtu)
     x = deformed(points, arrays)
 
     # Fig. 2: deformed mesh at the final time and the initial configuration.
@@ -107,7 +110,7 @@ def paper_figures(folder, out, scene="paper_fig1", element=""):
 
     # Fig. 3: von Mises norm of the stress (cell averages) on the deformed body.
     fig, ax = plt.subplots(figsize=(6.4, 5))
-    values = arrays["von_mises"][cells[:, 0]]
+    values = cell_arrays["von_mises"]
     patches = PolyCollection(x[cells], array=values, cmap="viridis",
                              edgecolors="face", linewidths=0.2)
     ax.add_collection(patches)
@@ -138,7 +141,7 @@ def slip_figures(folder, out, g=20.0):
     if shown[-1] != series[-1]:
         shown.append(series[-1])
     for t, pvtu in shown:
-        points, cells, arrays = read(pvtu)
+        points, cells, arrays, _ = read(pvtu)
         base = np.isclose(points[:, 1], 0.0)
         x = points[base, 0]
         status = arrays["contact_status"][base]

@@ -156,8 +156,21 @@ namespace VPContact
                        const unsigned int                   n_components,
                        const std::map<std::string, double> &constants)
   {
-    const std::string              expression = prm.get(entry);
-    const std::string              name       = section + "/" + entry;
+    return parse_function_expression<dim>(prm.get(entry),
+                                          section + "/" + entry,
+                                          n_components,
+                                          constants);
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  parse_function_expression(const std::string                   &expression,
+                            const std::string                   &name,
+                            const unsigned int                   n_components,
+                            const std::map<std::string, double> &constants)
+  {
     const std::vector<std::string> parts
       = Utilities::split_string_list(expression, ';');
     VPContactCheckParameter(parts.size() == n_components,
@@ -214,6 +227,28 @@ namespace VPContact
 
 
 
+  std::vector<std::string>
+  split_outside_parentheses(const std::string &text)
+  {
+    std::vector<std::string> parts(1);
+    int                      depth = 0;
+    for (const char c : text)
+      {
+        depth += (c == '(') - (c == ')');
+        if (c == ',' && depth == 0)
+          parts.emplace_back();
+        else
+          parts.back() += c;
+      }
+    for (auto &part : parts)
+      part = Utilities::trim(part);
+    if (parts.size() == 1 && parts[0].empty())
+      parts.clear();
+    return parts;
+  }
+
+
+
   template std::unique_ptr<FunctionParser<2>>
   parse_function_entry<2>(const ParameterHandler &,
                           const std::string &,
@@ -226,4 +261,14 @@ namespace VPContact
                           const std::string &,
                           const unsigned int,
                           const std::map<std::string, double> &);
+  template std::unique_ptr<FunctionParser<2>>
+  parse_function_expression<2>(const std::string &,
+                               const std::string &,
+                               const unsigned int,
+                               const std::map<std::string, double> &);
+  template std::unique_ptr<FunctionParser<3>>
+  parse_function_expression<3>(const std::string &,
+                               const std::string &,
+                               const unsigned int,
+                               const std::map<std::string, double> &);
 } // namespace VPContact

@@ -2,6 +2,7 @@
 // thread of its own or at once.
 #include <vpcontact/postprocess/field_writer.h>
 #include <vpcontact/postprocess/output_writer.h>
+#include <vpcontact/postprocess/vtu_cell_data.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -44,13 +45,18 @@ namespace VPContact
         {
           if (fields->build)
             fields->build(fields->patches);
+          const std::string cell_data
+            = take_cell_data(fields->patches, fields->cell_names);
           std::ostringstream vtu;
           DataOutBase::write_vtu(fields->patches,
                                  fields->names,
                                  fields->vector_ranges,
                                  flags,
                                  vtu);
-          write_file_atomically(filename, vtu.str());
+          write_file_atomically(filename,
+                                cell_data.empty() ?
+                                  vtu.str() :
+                                  insert_cell_data(vtu.str(), cell_data));
         }
       catch (const ExceptionBase &e)
         {

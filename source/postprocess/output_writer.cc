@@ -2,6 +2,7 @@
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/postprocess/output_writer.h>
 #include <vpcontact/postprocess/resumed_field_outputs.h>
+#include <vpcontact/postprocess/vtu_cell_data.h>
 
 #include <deal.II/base/utilities.h>
 
@@ -335,6 +336,7 @@ namespace VPContact
 
     output.names         = fields.names;
     output.vector_ranges = fields.vector_ranges;
+    output.cell_names    = fields.cell_names;
     pending_output       = std::move(output);
     field_writer.start(std::move(fields),
                        output_directory + "/" + own_piece,
@@ -403,7 +405,9 @@ namespace VPContact
                                    output.names,
                                    output.vector_ranges,
                                    vtk_flags);
-    write_file_atomically(output_directory + "/" + output.pvtu, pvtu.str());
+    write_file_atomically(output_directory + "/" + output.pvtu,
+                          insert_cell_data_record(pvtu.str(),
+                                                  output.cell_names));
   }
 
 

@@ -72,20 +72,18 @@ namespace VPContact
     // Refuse a boundary id that is in more than one of the lists: two
     // conditions on the same face would make the problem ill posed or
     // silently drop one of them. An id belongs to the first of the lists
-    // (in the order below) that has it; the message names a later one.
+    // (in the order of @p parts) that has it; the message names a later one.
     void
     check_one_part_per_id(
-      const ParameterHandler                            &prm,
-      const std::string                                 &section,
-      const std::set<types::boundary_id>                &clamped_ids,
-      const std::map<types::boundary_id, ComponentMask> &roller_ids,
-      const std::map<types::boundary_id, ComponentMask> &prescribed_ids,
-      const std::set<types::boundary_id>                &traction_ids,
-      const std::set<types::boundary_id>                &contact_ids)
+      const ParameterHandler &prm,
+      const std::string      &section,
+      const std::vector<std::pair<std::string, std::set<types::boundary_id>>>
+        &parts)
     {
       std::map<types::boundary_id, std::string> owner;
-      const auto                                claim
-        = [&](const types::boundary_id id, const std::string &entry) {
+      for (const auto &[entry, ids] : parts)
+        for (const auto id : ids)
+          {
             const auto [it, inserted] = owner.emplace(id, entry);
             VPContactCheckParameter(inserted,
                                     section + "/" + entry,
@@ -94,18 +92,48 @@ namespace VPContact
                                       + " is also in '" + it->second
                                       + "'. A boundary id belongs to one part "
                                         "only.");
-          };
-      for (const auto id : clamped_ids)
-        claim(id, "Clamped boundary ids");
-      for (const auto &[id, mask] : roller_ids)
-        claim(id, "Roller boundary ids");
-      for (const auto &[id, mask] : prescribed_ids)
-        claim(id, "Prescribed displacement boundary ids");
-      for (const auto id : traction_ids)
-        claim(id, "Traction boundary ids");
-      for (const auto id : contact_ids)
-        claim(id, "Contact boundary ids");
+          }
     }
+
+
+
+    // The entries of the boundary ids that carry a function of their own
+    // or nothing (in the current subsection).
+    void
+    declare_named_load_entries(ParameterHandler &prm)
+    {
+      const Patterns::List id_list(Patterns::Integer(0, 254));
+      prm.declare_entry(
+        "Tractions",
+        "",
+        Patterns::Anything(),
+        "Boundary ids of Gamma_N with a traction of their own, as 'id: "
+        "expression' pairs separated by commas, each expression with one "
+        "component per direction separated by ';', e.g. '1: 55*exp(t); 0, "
+        "3: 0; -200*t' (functions of x, y (z) and t [N/m^2]). An id listed "
+        "here is in no other entry, 'Traction boundary ids' included.");
+      prm.declare_entry("Free boundary ids",
+                        "",
+                        id_list,
+                        "Boundary ids that are traction free. A mesh read "
+                        "from a file must name each of its boundary ids in "
+                        "one of the entries of this section; on the built-in "
+                        "box an id in none of them is traction free.");
+    }
+
+
+
+    template <typename Value>
+    std::set<types::boundary_id>
+    keys(const std::map<types::boundary_id, Value> &map)
+    {
+      std::set<types::boundary_id> ids;
+      for (const auto &[id, value] : map)
+        ids.insert(id);
+      return ids;
+    }
+
+
 
     // The mask of the finite element's @p n_components components that
     // selects the displacement components of @p displacement_mask (the
@@ -200,6 +228,7 @@ namespace VPContact
                         "1",
                         id_list,
                         "Boundary ids of Gamma_N, where sigma nu = Traction.");
+      declare_named_load_entries(prm);
       prm.declare_entry("Contact boundary ids",
                         "",
                         id_list,
@@ -245,18 +274,14 @@ namespace VPContact
                              "Prescribed displacement boundary ids",
                              prescribed_ids,
                              prescribed_text);
-    check_one_part_per_id(prm,
-                          section,
-                          clamped_ids,
-                          roller_ids,
-                          prescribed_ids,
-                          traction_ids,
-                          contact_ids);
-
+    free_ids             = parse_id_list(prm, "Free boundary ids");
     const auto constants = parse_function_constants(prm,
                                                     section,
                                                     "Function constants",
                                                     coordinate_variables(dim));
+    tractions.parse(prm.get("Tractions"), section + "/Tractions", constants);
+    check_one_part_per_id(prm, section, named_parts());
+
     traction_function
       = parse_function_entry<dim>(prm, section, "Traction", dim, constants);
     body_force_function
@@ -273,29 +298,49 @@ namespace VPContact
 
 
   template <int dim>
+  std::vector<std::pair<std::string, std::set<types::boundary_id>>>
+  BoundaryConditions<dim>::named_parts() const
+  {
+    return {{"Clamped boundary ids", clamped_ids},
+            {"Roller boundary ids", keys(roller_ids)},
+            {"Prescribed displacement boundary ids", keys(prescribed_ids)},
+            {"Traction boundary ids", traction_ids},
+            {"Tractions", tractions.ids()},
+            {"Contact boundary ids", contact_ids},
+            {"Free boundary ids", free_ids}};
+  }
+
+
+
+  template <int dim>
   void
   BoundaryConditions<dim>::check_against_mesh(
-    const std::set<types::boundary_id> &mesh_ids) const
+    const std::set<types::boundary_id> &mesh_ids,
+    const std::string                  &mesh_source) const
   {
-    const auto check
-      = [&](const types::boundary_id id, const std::string &entry) {
+    std::set<types::boundary_id> unnamed = mesh_ids;
+    for (const auto &[entry, ids] : named_parts())
+      for (const auto id : ids)
+        {
           VPContactCheckParameter(mesh_ids.count(id) == 1,
                                   "Boundary conditions/" + entry,
                                   std::to_string(id),
                                   "the mesh has no boundary with this id; its "
                                   "boundary ids are "
                                     + id_list_text(mesh_ids) + ".");
-        };
-    for (const auto id : clamped_ids)
-      check(id, "Clamped boundary ids");
-    for (const auto &[id, mask] : roller_ids)
-      check(id, "Roller boundary ids");
-    for (const auto &[id, mask] : prescribed_ids)
-      check(id, "Prescribed displacement boundary ids");
-    for (const auto id : traction_ids)
-      check(id, "Traction boundary ids");
-    for (const auto id : contact_ids)
-      check(id, "Contact boundary ids");
+          unnamed.erase(id);
+        }
+    // A face the user forgot would otherwise get a condition without a
+    // word: traction free, or clamped through the default id 0.
+    AssertThrow(
+      unnamed.empty() || mesh_source.empty(),
+      ExcMessage(
+        mesh_source + ": the mesh has the boundary ids "
+        + id_list_text(mesh_ids) + ", and " + id_list_text(unnamed)
+        + " is named by no entry of the section Boundary conditions. Name "
+          "every boundary id of the mesh once: in Clamped, Roller, "
+          "Prescribed displacement, Traction or Contact boundary ids, in "
+          "Tractions, or in Free boundary ids (traction free)."));
   }
 
 
@@ -368,7 +413,7 @@ namespace VPContact
   BoundaryConditions<dim>::is_traction_boundary(
     const types::boundary_id id) const
   {
-    return traction_ids.count(id) == 1;
+    return traction_ids.count(id) == 1 || tractions.has(id);
   }
 
 
@@ -393,9 +438,9 @@ namespace VPContact
 
   template <int dim>
   const Function<dim> &
-  BoundaryConditions<dim>::traction() const
+  BoundaryConditions<dim>::traction(const types::boundary_id id) const
   {
-    return *traction_function;
+    return tractions.has(id) ? tractions.function(id) : *traction_function;
   }
 
 
@@ -423,6 +468,7 @@ namespace VPContact
   BoundaryConditions<dim>::set_time(const double time)
   {
     traction_function->set_time(time);
+    tractions.set_time(time);
     body_force_function->set_time(time);
   }
 
@@ -435,9 +481,13 @@ namespace VPContact
     std::string rollers;
     for (const auto &[id, text] : roller_text)
       rollers += (rollers.empty() ? "" : ",") + std::to_string(id) + ":" + text;
+    std::set<types::boundary_id> loaded = traction_ids;
+    for (const auto id : tractions.ids())
+      loaded.insert(id);
     return "clamped " + id_list_text(clamped_ids) + ", rollers {" + rollers
-           + "}, traction " + id_list_text(traction_ids) + ", contact "
-           + id_list_text(contact_ids);
+           + "}, traction " + id_list_text(loaded) + ", contact "
+           + id_list_text(contact_ids)
+           + (free_ids.empty() ? "" : ", free " + id_list_text(free_ids));
   }
 
 

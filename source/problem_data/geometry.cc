@@ -1,5 +1,6 @@
 // The section "Geometry": the coarse mesh (generated box or mesh file) and its
 // global refinement.
+#include <vpcontact/input/gmsh_file.h>
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/input/mesh_checks.h>
 #include <vpcontact/input/rank_zero_input.h>
@@ -33,80 +34,6 @@ namespace VPContact
         s += ", " + value;
       return s;
     }
-
-    // Gmsh writes "$MeshFormat" and then "version file-type data-size" on
-    // the next line, file-type 1 for a binary file. GridIn reads only
-    // ASCII: on binary bytes it stops at the first word it does not know.
-    bool
-    is_binary_gmsh(const std::string &bytes)
-    {
-      std::istringstream in(bytes.substr(0, 256));
-      std::string        keyword;
-      double             version   = 0;
-      int                file_type = 0;
-      return (in >> keyword) && keyword == "$MeshFormat"
-             && (in >> version >> file_type) && file_type != 0;
-    }
-
-    // The largest cell dimension of the elements of a Gmsh file: what a
-    // file of tetrahedra read for a 2D scene (or one of triangles for a 3D
-    // scene) holds, since GridIn's own message lists only the cell types of
-    // the scene's dimension. The file is scanned, not read by GridIn as the
-    // other dimension: GridIn crashes on some files of the wrong dimension.
-    // Format 2 gives each element's type (1 line, 15 point, 2 triangle, 3
-    // quadrilateral, 4 tetrahedron, 5 hexahedron, 6 prism, 7 pyramid);
-    // format 4 gives each block's entity dimension. 0 where unknown.
-    int
-    gmsh_cell_dimension(const std::string &bytes)
-    {
-      std::istringstream in(bytes);
-      std::string        word;
-      double             version = 0;
-      while (in >> word && word != "$MeshFormat")
-        ;
-      if (!(in >> version))
-        return 0;
-      while (in >> word && word != "$Elements")
-        ;
-      int  dimension = 0;
-      long n_items   = 0;
-      if (version >= 4)
-        {
-          long n_elements, min_tag, max_tag;
-          if (!(in >> n_items >> n_elements >> min_tag >> max_tag))
-            return 0;
-          for (long block = 0; block < n_items; ++block)
-            {
-              int  entity_dim, entity_tag, type;
-              long n_in_block;
-              if (!(in >> entity_dim >> entity_tag >> type >> n_in_block))
-                return dimension;
-              dimension = std::max(dimension, entity_dim);
-              std::string line;
-              std::getline(in, line);
-              for (long i = 0; i < n_in_block && std::getline(in, line); ++i)
-                ;
-            }
-          return dimension;
-        }
-      if (!(in >> n_items))
-        return 0;
-      std::string line;
-      std::getline(in, line);
-      for (long i = 0; i < n_items && std::getline(in, line); ++i)
-        {
-          std::istringstream element(line);
-          int                number, type;
-          if (element >> number >> type)
-            dimension = std::max(dimension,
-                                 type >= 4 && type <= 7 ? 3 :
-                                 type == 2 || type == 3 ? 2 :
-                                                          dimension);
-        }
-      return dimension;
-    }
-
-
 
     // The position of @p p, in the box [lower, upper], on a Z-order
     // (Morton) curve: the bits of its coordinates, scaled to 21-bit
@@ -217,6 +144,7 @@ namespace VPContact
                         "Number of times every coarse cell is refined "
                         "(each refinement halves h).");
     }
+    CurvedBoundaries<dim>::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -265,6 +193,7 @@ namespace VPContact
       }
     n_global_refinements = prm.get_integer("Global refinements");
     simplex              = (prm.get("Cell type") == "simplex");
+    curved_boundaries.parse_parameters(prm);
     prm.leave_subsection();
     if (shape == Shape::file)
       {
@@ -360,6 +289,7 @@ namespace VPContact
         else
           triangulation.copy_triangulation(*coarse);
       }
+    curved_boundaries.attach(triangulation);
   }
 
 
@@ -509,6 +439,18 @@ namespace VPContact
                                + error_message(e)));
       }
     check_mesh_cells(coarse, source);
+    if (extension == "msh")
+      check_gmsh_boundary_tags(coarse, mesh_bytes, source);
+  }
+
+
+
+  template <int dim>
+  std::string
+  Geometry<dim>::mesh_source() const
+  {
+    return shape == Shape::box ? "" :
+                                 "Geometry/Mesh file = " + mesh_file_as_given;
   }
 
 

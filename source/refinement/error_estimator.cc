@@ -174,9 +174,16 @@ namespace VPContact
         }
     double *const m = &moments[i * n_nodes * n_c];
     std::fill(m, m + n_nodes * n_c, 0.);
-    double time = 0;
+    double     time      = 0;
+    CellNorms &size      = norms[i];
+    size.solution_stress = size.solution_strain = size.solution_damage = 0;
     for (unsigned int q = 0; q < n_q; ++q)
       {
+        size.solution_stress
+          += scalar_product(points[q].stress, points[q].stress) * JxW[q];
+        size.solution_strain += scalar_product(strain[q], strain[q]) * JxW[q];
+        if (damage)
+          size.solution_damage += zeta[q] * zeta[q] * JxW[q];
         for (unsigned int a = 0; a < n_nodes; ++a)
           {
             const double w = kinematics->shape_value(q, a) * JxW[q];
@@ -410,25 +417,32 @@ namespace VPContact
   {
     // The cells' norms summed in the cells' order (the same bits with any
     // number of threads), then over the ranks.
-    double sums[4] = {0, 0, 0, 0};
+    double sums[7] = {0, 0, 0, 0, 0, 0, 0};
     for (const CellNorms &c : norms)
       {
         sums[0] += c.stress;
         sums[1] += c.strain;
         sums[2] += c.damage;
         sums[3] += c.time;
+        sums[4] += c.solution_stress;
+        sums[5] += c.solution_strain;
+        sums[6] += c.solution_damage;
       }
-    Utilities::MPI::sum(ArrayView<const double>(sums, 4),
+    Utilities::MPI::sum(ArrayView<const double>(sums, 7),
                         triangulation->get_communicator(),
-                        ArrayView<double>(sums, 4));
+                        ArrayView<double>(sums, 7));
     ErrorEstimate estimate;
     estimate.space
       = std::sqrt(sums[0]) + std::sqrt(sums[1]) + std::sqrt(sums[2]);
+    const double solution
+      = std::sqrt(sums[4]) + std::sqrt(sums[5]) + std::sqrt(sums[6]);
     estimate.time = (1. + 1. / youngs_modulus) * 0.5 * k * std::sqrt(sums[3]);
+    estimate.relative = solution > 0 ? estimate.sum() / solution : 0.;
     if (estimate.sum() > largest_sum.sum())
       largest_sum = estimate;
-    largest_part.space = std::max(largest_part.space, estimate.space);
-    largest_part.time  = std::max(largest_part.time, estimate.time);
+    largest_part.space    = std::max(largest_part.space, estimate.space);
+    largest_part.time     = std::max(largest_part.time, estimate.time);
+    largest_part.relative = std::max(largest_part.relative, estimate.relative);
     return estimate;
   }
 
@@ -468,7 +482,8 @@ namespace VPContact
     return {{"estimate_space", largest_sum.space},
             {"estimate_time", largest_sum.time},
             {"estimate_space_max", largest_part.space},
-            {"estimate_time_max", largest_part.time}};
+            {"estimate_time_max", largest_part.time},
+            {"estimate_relative_max", largest_part.relative}};
   }
 
 
@@ -483,7 +498,9 @@ namespace VPContact
       return found == maxima.end() ? 0. : found->second;
     };
     largest_sum  = {value("estimate_space"), value("estimate_time")};
-    largest_part = {value("estimate_space_max"), value("estimate_time_max")};
+    largest_part = {value("estimate_space_max"),
+                    value("estimate_time_max"),
+                    value("estimate_relative_max")};
   }
 
 

@@ -154,7 +154,8 @@ namespace VPContact
           && boundary_conditions.is_traction_boundary(face->boundary_id()))
         {
           fe_face_values.reinit(cell, face);
-          add_load(boundary_conditions.traction(), fe_face_values);
+          add_load(boundary_conditions.traction(face->boundary_id()),
+                   fe_face_values);
         }
   }
 

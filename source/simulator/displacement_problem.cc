@@ -62,10 +62,11 @@ namespace VPContact
 
   template <int dim>
   Physics<dim> *
-  DisplacementProblem<dim>::setup_contact()
+  DisplacementProblem<dim>::setup_contact(const std::string &mesh_source)
   {
-    boundary_conditions.check_against_mesh(
-      Geometry<dim>::boundary_ids_of(triangulation));
+    boundary_conditions.check_against_mesh(Geometry<dim>::boundary_ids_of(
+                                             triangulation),
+                                           mesh_source);
     friction_problem.reset();
     if (!boundary_conditions.has_contact_boundary())
       return nullptr;

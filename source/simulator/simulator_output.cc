@@ -414,8 +414,14 @@ namespace VPContact
                     von_mises,
                     components,
                     mesh->locally_owned_subdomain());
+    // The cell fields come last: von Mises, the stress components and the
+    // owner, written as cell data.
     FieldPatches<dim> fields;
-    fields.names         = data_out.field_names();
+    fields.names                 = data_out.field_names();
+    const std::size_t n_by_cells = components.size() + 2;
+    fields.cell_names.assign(fields.names.end() - n_by_cells,
+                             fields.names.end());
+    fields.names.resize(fields.names.size() - n_by_cells);
     fields.vector_ranges = data_out.vector_ranges();
     fields.build = [sources](std::vector<DataOutBase::Patch<dim, dim>> &p) {
       sources->data_out.build_patches();
@@ -442,7 +448,10 @@ namespace VPContact
         pcout << "Estimated error (Theorem 2's norm, largest over the steps): "
               << printf_text("%.3e", largest.sum()) << " (space "
               << printf_text("%.3e", largest.space) << ", time "
-              << printf_text("%.3e", largest.time) << ")";
+              << printf_text("%.3e", largest.time) << "); relative to the "
+              << "solution's norm at its step at most "
+              << printf_text("%.3g %%",
+                             100. * error_estimator.largest_parts().relative);
         if (!output_writer.deterministic_screen_output())
           pcout << " in " << printf_text("%.3g", wall_time) << " s of run time";
         pcout << '\n';

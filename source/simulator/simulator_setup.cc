@@ -23,7 +23,8 @@ namespace VPContact
     else
       geometry.create_mesh(*mesh);
     // Tresca friction, where the scene has it, joins the physics objects.
-    if (Physics<dim> *const friction = displacement_problem.setup_contact())
+    if (Physics<dim> *const friction
+        = displacement_problem.setup_contact(geometry.mesh_source()))
       physics.push_back(friction);
     collect_step_reports();
   }

@@ -40,6 +40,17 @@ namespace VPContact
                        const std::map<std::string, double> &constants = {});
 
   /**
+   * The parsed function of @p expression, called @p name in messages (e.g.
+   * "Boundary conditions/Tractions, id 3"), as parse_function_entry().
+   */
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  parse_function_expression(const std::string                   &expression,
+                            const std::string                   &name,
+                            const unsigned int                   n_components,
+                            const std::map<std::string, double> &constants);
+
+  /**
    * The named constants of the entry @p entry of the current subsection
    * (called @p section in messages), written as name:value pairs ("p:55,
    * E:1000"), for the expressions of that subsection, whose variables are
@@ -52,6 +63,11 @@ namespace VPContact
                            const std::string              &section,
                            const std::string              &entry,
                            const std::vector<std::string> &variables);
+
+  /// The parts of @p text between the commas outside parentheses, trimmed
+  /// ("1: max(x, 0); 0, 2: 0; 1" is two parts); none for an empty text.
+  std::vector<std::string>
+  split_outside_parentheses(const std::string &text);
 
   /// The variables of a function of position and time: x, y (z), t.
   std::vector<std::string>

@@ -34,8 +34,12 @@ namespace VPContact
   struct FieldPatches
   {
     std::vector<DataOutBase::Patch<dim, dim>> patches;
-    std::vector<std::string>                  names;
-    VectorRanges                              vector_ranges;
+    /// The names of the point fields.
+    std::vector<std::string> names;
+    VectorRanges             vector_ranges;
+    /// The names of the cell fields: the last data rows of the patches,
+    /// written as cell data (see take_cell_data()).
+    std::vector<std::string> cell_names;
     /// If set, fills the patches where the piece is written (in the
     /// background, with what it owns), before they are written: building
     /// them costs more than writing them.

@@ -167,6 +167,7 @@ namespace VPContact
       std::vector<std::string> pieces;
       std::vector<std::string> names;
       VectorRanges             vector_ranges;
+      std::vector<std::string> cell_names;
     };
 
     /// Write the .pvtu record of @p output (rank 0 calls this).

@@ -4,6 +4,7 @@
 #define vpcontact_boundary_conditions_h
 
 #include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/problem_data/boundary_functions.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
@@ -31,12 +32,17 @@ namespace VPContact
    * - prescribed displacement: the listed components follow the function
    *   "Prescribed displacement" g(x, t), the others are traction free
    *   (displacement-controlled loading);
-   * - traction (Gamma_N): sigma nu = f_N(x, t);
+   * - traction (Gamma_N): sigma nu = f_N(x, t), one function for the ids
+   *   of "Traction boundary ids" and one of its own for each id of
+   *   "Tractions";
    * - contact (Gamma_C): bilateral contact u . nu = 0 with the constraint
    *   built for any boundary shape by
    *   VectorTools::compute_no_normal_flux_constraints.
-   * Ids in no list are traction free. Where a contact node also lies on a
-   * clamped or roller part (a corner), the Dirichlet condition wins.
+   * - free: traction free.
+   * A mesh read from a file must name each of its boundary ids in one list;
+   * on the built-in box an id in none is traction free. Where a contact node
+   * also lies on a clamped or roller part (a corner), the Dirichlet condition
+   * wins.
    */
   template <int dim>
   class BoundaryConditions
@@ -50,10 +56,13 @@ namespace VPContact
 
     /**
      * Stop with a message naming the parameter if a listed boundary id does
-     * not exist in the mesh, whose ids are @p mesh_ids.
+     * not exist in the mesh, whose ids are @p mesh_ids, and, for a mesh
+     * read from a file (@p mesh_source names it, "" for the built-in box),
+     * if an id of the mesh is in no list.
      */
     void
-    check_against_mesh(const std::set<types::boundary_id> &mesh_ids) const;
+    check_against_mesh(const std::set<types::boundary_id> &mesh_ids,
+                       const std::string                  &mesh_source) const;
 
     /**
      * Add the constraints of the clamped, roller, prescribed and contact
@@ -86,9 +95,10 @@ namespace VPContact
     const std::set<types::boundary_id> &
     contact_boundary_ids() const;
 
-    /// f_N, with dim components, time set by set_time().
+    /// f_N on the boundary @p id, with dim components, time set by
+    /// set_time().
     const Function<dim> &
-    traction() const;
+    traction(const types::boundary_id id) const;
 
     /// f_B, with dim components, time set by set_time().
     const Function<dim> &
@@ -106,6 +116,10 @@ namespace VPContact
     summary() const;
 
   private:
+    /// Each list of boundary ids with the name of its entry.
+    std::vector<std::pair<std::string, std::set<types::boundary_id>>>
+    named_parts() const;
+
     std::set<types::boundary_id>                clamped_ids;
     std::map<types::boundary_id, ComponentMask> roller_ids;
     std::map<types::boundary_id, std::string>   roller_text;
@@ -115,6 +129,8 @@ namespace VPContact
     std::set<types::boundary_id>                traction_ids;
     std::set<types::boundary_id>                contact_ids;
     std::unique_ptr<FunctionParser<dim>>        traction_function;
+    BoundaryFunctions<dim>                      tractions;
+    std::set<types::boundary_id>                free_ids;
     std::unique_ptr<FunctionParser<dim>>        body_force_function;
     bool                                        body_force_is_zero = true;
   };

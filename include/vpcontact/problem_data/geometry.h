@@ -3,6 +3,8 @@
 #ifndef vpcontact_geometry_h
 #define vpcontact_geometry_h
 
+#include <vpcontact/problem_data/curved_boundaries.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
@@ -58,6 +60,11 @@ namespace VPContact
      */
     void
     create_coarse_mesh(parallel::TriangulationBase<dim> &triangulation);
+
+    /// "Geometry/Mesh file = NAME" for a mesh file, "" for the box: where
+    /// messages say the mesh came from.
+    std::string
+    mesh_source() const;
 
     /// The CRC-32 of the mesh file in hex, or "" for a box.
     std::string
@@ -132,6 +139,8 @@ namespace VPContact
     /// The mesh built from them by parse_parameters(), until the first
     /// create_coarse_mesh() takes it (a later call builds it again).
     std::shared_ptr<Triangulation<dim>> file_mesh;
+    /// The manifolds of the curved boundary parts.
+    CurvedBoundaries<dim> curved_boundaries;
   };
 } // namespace VPContact
 

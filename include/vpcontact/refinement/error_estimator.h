@@ -35,6 +35,10 @@ namespace VPContact
   {
     double space = 0;
     double time  = 0;
+    /// The estimate relative to the discrete solution's own size in the
+    /// same norm, ||eps(u_h)|| + ||sigma_h|| + ||zeta_h||, at the same step
+    /// (0 for a zero solution).
+    double relative = 0;
     double
     sum() const
     {
@@ -121,7 +125,7 @@ namespace VPContact
     ErrorEstimate
     largest() const;
 
-    /// max_n of each part on its own.
+    /// max_n of each part on its own, and of the relative estimate.
     ErrorEstimate
     largest_parts() const;
 
@@ -145,6 +149,8 @@ namespace VPContact
     struct CellNorms
     {
       double stress = 0, strain = 0, damage = 0, time = 0;
+      /// The squared norms of sigma_h, eps(u_h) and zeta_h on the cell.
+      double solution_stress = 0, solution_strain = 0, solution_damage = 0;
     };
     void
     make_own_space(const parallel::TriangulationBase<dim> &triangulation);

@@ -101,13 +101,14 @@ namespace VPContact
     check_stability_limits() const;
 
     /**
-     * On a new mesh (its boundary ids checked first): Tresca friction where
-     * the contact boundary has g > 0 somewhere over the run (else none).
-     * Returns the FrictionProblem, or nullptr, for the simulator's list of
-     * physics objects.
+     * On a new mesh (its boundary ids checked first, against the entries
+     * and, for a mesh from a file, @p mesh_source, for ids no entry names):
+     * Tresca friction where the contact boundary has g > 0 somewhere over
+     * the run (else none). Returns the FrictionProblem, or nullptr, for the
+     * simulator's list of physics objects.
      */
     Physics<dim> *
-    setup_contact();
+    setup_contact(const std::string &mesh_source);
 
     /// On new degrees of freedom: constraints, the matrix's sparsity, the
     /// contact nodes, the check that the body is held, and the vectors.
