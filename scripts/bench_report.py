@@ -432,6 +432,7 @@ def setup_scaling(csv_path):
 
 def write_report(out, csv_path, rows):
     import bench_goals  # noqa: E402  (it imports this module)
+    import bench_solvers_report  # noqa: E402  (next to this file)
     ok = [r for r in rows if r["status"] == "ok"] or rows
     m = ok[0]
     # The tables of HEAD against the peer and the goals take HEAD's runs;
@@ -521,7 +522,7 @@ def write_report(out, csv_path, rows):
         "The goals the project set itself for this program against the "
         "peer, the figures of this run, and what limits them.", "",
     ] + bench_goals.goals(best, sizes, algebras, every) + scene_3d(csv_path) + setup_scaling(
-        csv_path)
+        csv_path) + bench_solvers_report.solver_choice(csv_path, read_csv)
     # One line per reason, listing the runs it concerns.
     reasons = {}
     for r in rows:

@@ -29,9 +29,15 @@ namespace VPContact
         "tolerance; see doc/performance.md for what each costs.");
       prm.declare_entry(
         "Linear solver",
-        "CG with AMG",
-        Patterns::Selection("CG with AMG|direct|MUMPS|Cholesky"),
-        "'CG with AMG': conjugate gradients preconditioned by algebraic "
+        "automatic",
+        Patterns::Selection("automatic|CG with AMG|direct|MUMPS|Cholesky"),
+        "'automatic': a factorization where scripts/bench_solvers measured "
+        "one faster over a run than CG with AMG (doc/performance.md): "
+        "'Cholesky' on one process, 'MUMPS' on several, up to 2,000,000 "
+        "displacement unknowns in 2D and 210,000 in 3D (on several ranks in "
+        "2D from 100,000 on), else 'CG with AMG'; the header names the "
+        "choice. 'CG with AMG': "
+        "conjugate gradients preconditioned by algebraic "
         "multigrid whose near null space holds the rigid motions; scales to "
         "large meshes and many ranks, and is the method for 3D. 'direct': "
         "a factorization that gathers the matrix (Amesos KLU with Trilinos, "
@@ -66,12 +72,13 @@ namespace VPContact
       = (prm.get("Linear algebra") == "PETSc" ? LinearAlgebra::petsc :
                                                 LinearAlgebra::trilinos);
     const std::string name = prm.get("Linear solver");
-    method                 = (name == "CG with AMG" ? SpdMethod::cg_amg :
-                              name == "Cholesky"    ? SpdMethod::cholesky :
-                              name == "MUMPS"       ? SpdMethod::mumps :
-                                                      SpdMethod::direct);
-    relative_tolerance     = prm.get_double("Relative tolerance");
-    max_iterations         = prm.get_integer("Maximum linear iterations");
+    automatic              = (name == "automatic");
+    method = (name == "CG with AMG" || automatic ? SpdMethod::cg_amg :
+              name == "Cholesky"                 ? SpdMethod::cholesky :
+              name == "MUMPS"                    ? SpdMethod::mumps :
+                                                   SpdMethod::direct);
+    relative_tolerance = prm.get_double("Relative tolerance");
+    max_iterations     = prm.get_integer("Maximum linear iterations");
     prm.leave_subsection();
     // At 1 the start vector already meets the tolerance, and no step would
     // be solved at all.
@@ -87,6 +94,62 @@ namespace VPContact
                             "factorizes on one process only: run without "
                             "mpirun, or choose MUMPS "
                             "(distributed) or CG with AMG.");
+  }
+
+
+
+  types::global_dof_index
+  LinearSolver::factorization_limit(const unsigned int dim,
+                                    const unsigned int n_ranks)
+  {
+    // A factorization was the faster over ten steps in every case that
+    // scripts/bench_solvers measured (doc/performance.md): 2D up to 526,000
+    // displacement unknowns (512^2), 3D up to 207,000 (40^3, and the block
+    // with a hole refined twice), on 1 and 2 ranks. The limits are those
+    // sizes in 3D, where the factors grow like n^(4/3), and 2,000,000 in
+    // 2D, where they grow like n log n (the run of 512^2 took 1.7 GB with
+    // the factors and 1.3 GB with AMG: four times the unknowns stay within
+    // a machine's memory).
+    (void)n_ranks;
+    return dim == 2 ? 2000000 : 210000;
+  }
+
+
+
+  void
+  LinearSolver::choose(const types::global_dof_index n_unknowns,
+                       const unsigned int            dim,
+                       const unsigned int            n_ranks)
+  {
+    if (!automatic)
+      return;
+    // On several ranks, MUMPS' distributed analysis costs more than CG
+    // with AMG below about 100,000 unknowns in 2D (scripts/bench_solvers:
+    // AMG was the faster on 2 ranks up to 52,704, MUMPS from 132,098).
+    const types::global_dof_index limit = factorization_limit(dim, n_ranks);
+    const types::global_dof_index least
+      = (n_ranks > 1 && dim == 2) ? 100000 : 0;
+    const bool factorize = (n_unknowns <= limit && n_unknowns >= least);
+    method               = (!factorize   ? SpdMethod::cg_amg :
+                            n_ranks == 1 ? SpdMethod::cholesky :
+                                           SpdMethod::mumps);
+    reason = std::to_string(n_unknowns) + " displacement unknowns in "
+             + std::to_string(dim) + "D on " + std::to_string(n_ranks)
+             + (n_ranks == 1 ? " process" : " processes") + ", "
+             + (factorize ? "within" : "outside") + " [" + std::to_string(least)
+             + ", " + std::to_string(limit) + "]";
+  }
+
+
+
+  std::string
+  LinearSolver::description() const
+  {
+    const std::string name = (method == SpdMethod::cg_amg   ? "CG with AMG" :
+                              method == SpdMethod::cholesky ? "Cholesky" :
+                              method == SpdMethod::mumps    ? "MUMPS" :
+                                                              "direct");
+    return name + (automatic ? " (automatic: " + reason + ")" : "");
   }
 
 

@@ -118,13 +118,8 @@ namespace VPContact
 
   template <int dim>
   void
-  DisplacementProblem<dim>::setup_dofs()
+  DisplacementProblem<dim>::setup_block_views()
   {
-    // Sets of an earlier mesh (a previous refinement cycle) name degrees of
-    // freedom that no longer exist; the constraints below must not see them.
-    if (friction_problem)
-      friction_problem->clear();
-    measure_body();
     // The displacement block [0, n_u) of the block numbering.
     std::vector<unsigned int> block_component(fe.n_components(), 0);
     if (fe.n_components() > dim)
@@ -133,18 +128,34 @@ namespace VPContact
       = DoFTools::count_dofs_per_fe_block(dof_handler, block_component)[0];
     displacement.owned    = locally_owned_dofs.get_view(0, n_u);
     displacement.relevant = locally_relevant_dofs.get_view(0, n_u);
+    // (Cholesky factorizes in the one process of the whole job only.)
+    displacement.solver.choose(n_u,
+                               dim,
+                               Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+  }
 
+
+
+  template <int dim>
+  void
+  DisplacementProblem<dim>::setup_dofs()
+  {
+    // Sets of an earlier mesh (a previous refinement cycle) name degrees of
+    // freedom that no longer exist; the constraints below must not see them.
+    if (friction_problem)
+      friction_problem->clear();
+    measure_body();
+    setup_block_views();
     // The constraints at t = 0 have the structure of those of every step
-    // (only inhomogeneities of prescribed displacements change), so the
+    // (only inhomogeneities of prescribed displacements change): the
     // matrix built with them serves the whole run.
     make_constraints(0., nullptr);
     setup_displacement_matrix();
 
     // The contact nodes are read off the constraints without friction; the
-    // sparsity pattern of the matrix, built with those, also holds every
-    // pattern with more nodes constrained. All nodes start in the stick set.
-    // What these constraints leave free is what the body keeps once every
-    // contact node slips (check_held_while_slipping()).
+    // sparsity pattern built with those holds every pattern with more nodes
+    // constrained. All nodes start in the stick set. What these constraints
+    // leave free is what the body keeps once every contact node slips.
     const RigidMotionCheck<dim> rigid_motion_check(dof_handler);
     if (friction_problem)
       {

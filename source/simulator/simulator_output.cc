@@ -195,8 +195,12 @@ namespace VPContact
           << "  time: T = " << time_discretization.end_time()
           << ", k = " << time_discretization.step_size() << ", "
           << time_discretization.n_steps() << " steps\n";
+    // The solver is named only where the output may differ between 1 and
+    // several ranks: the automatic choice depends on the ranks.
     if (!output_writer.deterministic_screen_output())
-      pcout << "  running on " << n_ranks << " MPI rank(s); output in "
+      pcout << "  solver: " << displacement_problem.solver().description()
+            << '\n'
+            << "  running on " << n_ranks << " MPI rank(s); output in "
             << output_writer.directory() << "/\n";
     pcout << std::endl;
   }

@@ -39,6 +39,24 @@ namespace VPContact
     parse_parameters(ParameterHandler &prm);
 
     /**
+     * With Linear solver = automatic: the method for a displacement system
+     * of @p n_unknowns in @p dim dimensions on @p n_ranks processes (on every
+     * new mesh, before initialize()); else nothing.
+     */
+    void
+    choose(const types::global_dof_index n_unknowns,
+           const unsigned int            dim,
+           const unsigned int            n_ranks);
+
+    /// The largest system that the automatic choice factorizes.
+    static types::global_dof_index
+    factorization_limit(const unsigned int dim, const unsigned int n_ranks);
+
+    /// The method for the header, and why where it was chosen.
+    std::string
+    description() const;
+
+    /**
      * Build the preconditioner or factorization of @p matrix (which it
      * refers to until clear() or the next initialize()); @p near_null_space
      * are the rigid motions, for AMG.
@@ -126,8 +144,11 @@ namespace VPContact
     iteration_limit() const;
 
   private:
-    LinearAlgebra              linear_algebra     = LinearAlgebra::trilinos;
-    SpdMethod                  method             = SpdMethod::cg_amg;
+    LinearAlgebra linear_algebra = LinearAlgebra::trilinos;
+    SpdMethod     method         = SpdMethod::cg_amg;
+    /// Linear solver = automatic, and why choose() took the method.
+    bool                       automatic = false;
+    std::string                reason;
     double                     relative_tolerance = 1e-10;
     unsigned int               max_iterations     = 1000;
     std::unique_ptr<SpdSolver> solver;

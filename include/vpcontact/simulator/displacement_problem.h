@@ -242,6 +242,11 @@ namespace VPContact
     reset_linear_iterations();
 
   private:
+    /// The displacement block [0, n_u) of the block numbering, and the
+    /// solver for its size (Linear solver = automatic).
+    void
+    setup_block_views();
+
     /**
      * The FEValues of a pass over the cells that assembles forces: values,
      * gradients, points and weights on the cell, and on faces for the
