@@ -526,15 +526,31 @@ namespace VPContact
 
   template <int dim>
   void
-  FrictionActiveSet<dim>::read_state(const LA::MPI::Vector &state)
+  FrictionActiveSet<dim>::read_state(const LA::MPI::Vector &state,
+                                     const bool             interpolated)
   {
     for (auto &node : nodes)
       {
-        const double  status = state(node.dofs[0]);
+        double        status = state(node.dofs[0]);
         TangentVector direction;
         for (unsigned int k = 0; k < node.tangents.size(); ++k)
           direction[k] = state(node.dofs[k + 1]);
-        const double size = direction.norm();
+        double size = direction.norm();
+        // A new node between nodes of different sets starts in the stick
+        // set, as every node of a run's first step does; one between two
+        // slipping nodes slips in their mean direction.
+        if (interpolated && status == 2. && size > 0.)
+          {
+            direction /= size;
+            size = 1.;
+          }
+        else if (interpolated
+                 && !((status == 1. || status == 3.) && size == 0.))
+          {
+            status    = 1.;
+            direction = TangentVector();
+            size      = 0.;
+          }
         AssertThrow(((status == 1. || status == 3.) && size == 0.)
                       || (status == 2. && std::abs(size - 1.) < 1e-8),
                     ExcMessage("The checkpoint holds no valid stick/slip "

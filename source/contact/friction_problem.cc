@@ -494,13 +494,38 @@ namespace VPContact
     const LA::MPI::Vector                            &sets,
     const std::function<double(const std::string &)> &counter)
   {
-    active_set.read_state(sets);
+    read_state(sets, counter, false);
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::read_state(
+    const LA::MPI::Vector                            &sets,
+    const std::function<double(const std::string &)> &counter,
+    const bool                                        interpolated)
+  {
+    active_set.read_state(sets, interpolated);
     largest_violation = counter("max_friction_violation");
     if (friction.unilateral())
       {
         largest_pressure_violation = counter("max_pressure_violation");
         largest_gap_violation      = counter("max_gap_violation");
       }
+  }
+
+
+
+  template <int dim>
+  void
+  FrictionProblem<dim>::read_transferred_state(
+    const LA::MPI::Vector                            &sets_owned,
+    const LA::MPI::Vector                            &sets,
+    const std::function<double(const std::string &)> &counter)
+  {
+    (void)sets_owned;
+    read_state(sets, counter, true);
   }
 
 

@@ -341,11 +341,17 @@ namespace VPContact
 
 
   void
-  DamageBounds::read_state(const LA::MPI::Vector &state)
+  DamageBounds::read_state(const LA::MPI::Vector &state,
+                           const bool             interpolated)
   {
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
-        const double value = state(dofs[i]);
+        double value = state(dofs[i]);
+        // A new node between a bound node and a free one (or one at the
+        // other bound) starts free: the bound iteration of the next step
+        // puts it back on a bound if it belongs there.
+        if (interpolated && value != -1. && value != 1.)
+          value = 0.;
         AssertThrow(value == -1. || value == 0. || value == 1.,
                     ExcMessage("The checkpoint holds no valid damage bound "
                                "state at damage degree of freedom "

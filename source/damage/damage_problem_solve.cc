@@ -322,11 +322,35 @@ namespace VPContact
     const LA::MPI::Vector & /*sets*/,
     const std::function<double(const std::string &)> &counter)
   {
+    read_state(sets_owned, counter, false);
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::read_transferred_state(
+    const LA::MPI::Vector &sets_owned,
+    const LA::MPI::Vector & /*sets*/,
+    const std::function<double(const std::string &)> &counter)
+  {
+    read_state(sets_owned, counter, true);
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::read_state(
+    const LA::MPI::Vector                            &sets_owned,
+    const std::function<double(const std::string &)> &counter,
+    const bool                                        interpolated)
+  {
     LA::MPI::Vector bound_sets(system.owned(), communicator);
     system.gather(sets_owned, bound_sets);
     LA::MPI::Vector ghosted(system.owned(), system.relevant(), communicator);
     ghosted = bound_sets;
-    bounds.read_state(ghosted);
+    bounds.read_state(ghosted, interpolated);
     largest_violation = counter("max_damage_violation");
     rings_ahead = static_cast<unsigned int>(counter("damage_rings_ahead"));
   }

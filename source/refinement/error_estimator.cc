@@ -356,6 +356,7 @@ namespace VPContact
                       + std::sqrt(norm.damage);
     const unsigned int index = (*cells)[i]->active_cell_index();
     indicators[index]        = std::max(indicators[index], eta);
+    step_indicators[index]   = eta;
   }
 
 
@@ -471,6 +472,15 @@ namespace VPContact
   ErrorEstimator<dim>::cell_indicators() const
   {
     return indicators;
+  }
+
+
+
+  template <int dim>
+  const Vector<float> &
+  ErrorEstimator<dim>::last_step_indicators() const
+  {
+    return step_indicators;
   }
 
 

@@ -61,6 +61,7 @@ namespace VPContact
     setup_hanging_nodes();
     setup_cell_data();
     indicators.reinit(tria.n_active_cells());
+    step_indicators.reinit(tria.n_active_cells());
     largest_sum  = ErrorEstimate();
     largest_part = ErrorEstimate();
   }

@@ -1,5 +1,5 @@
 // The section "Mesh refinement" and the refinement of the mesh between
-// cycles.
+// cycles and during a run.
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/input/mesh_checks.h>
 #include <vpcontact/refinement/mesh_refinement.h>
@@ -59,6 +59,39 @@ namespace VPContact
                         "No cell is refined beyond this many levels above "
                         "the coarse mesh (including Geometry/Global "
                         "refinements).");
+      prm.declare_entry("Minimum level",
+                        "0",
+                        Patterns::Integer(0, 20),
+                        "Adaptive only: no cell is coarsened to fewer levels "
+                        "than this above the coarse mesh.");
+      prm.declare_entry(
+        "Maximum cells",
+        "0",
+        Patterns::Integer(0),
+        "Adaptive only: a cell budget. Where the flags of Refinement "
+        "criterion would make a mesh of more cells, only the cells with the "
+        "largest indicators that keep it within the budget are refined "
+        "(deal.II's refine_and_coarsen_fixed_number with max_n_cells). 0: "
+        "no budget.");
+      prm.declare_entry(
+        "Adapt during run",
+        "false",
+        Patterns::Bool(),
+        "Refine and coarsen the mesh during the run, after every 'Adapt "
+        "every' steps, by the error estimate's cell indicators of that step "
+        "(Refinement criterion, Refinement fraction, Coarsening fraction, "
+        "Maximum level, Minimum level, Maximum cells); the displacement, the "
+        "damage, their increments, the stress history at the quadrature "
+        "points and the active sets are carried to the new mesh "
+        "(doc/adaptivity.md). Needs a mesh of quadrilaterals (hexahedra) and "
+        "Number of cycles = 1.");
+      prm.declare_entry("Adapt every",
+                        "10",
+                        Patterns::Integer(1),
+                        "With Adapt during run: the steps between two "
+                        "adaptations. A multiple of Error estimate/Every "
+                        "steps, so that the step of an adaptation is "
+                        "estimated.");
     }
     prm.leave_subsection();
     declare_time_step_entries(prm);
@@ -112,6 +145,10 @@ namespace VPContact
     refine_fraction  = prm.get_double("Refinement fraction");
     coarsen_fraction = prm.get_double("Coarsening fraction");
     maximum_level    = prm.get_integer("Maximum level");
+    minimum_level    = prm.get_integer("Minimum level");
+    maximum_cells    = prm.get_integer("Maximum cells");
+    during_run       = prm.get_bool("Adapt during run");
+    every_steps      = prm.get_integer("Adapt every");
     refine_time_step = prm.get_bool("Refine time step with mesh");
     step_from_estimate = prm.get_bool("Time step from error estimate");
     prm.leave_subsection();
@@ -131,8 +168,23 @@ namespace VPContact
       "the refinement and coarsening fractions add up to more than 1 "
       "(Refinement fraction = "
         + to_text(refine_fraction) + "). Lower one of them.");
-    VPContactCheckParameter(refinement == Strategy::uniform
-                              || refine_fraction > 0. || cycles == 1,
+    VPContactCheckParameter(!during_run || cycles == 1,
+                            "Mesh refinement/Adapt during run",
+                            std::string("true"),
+                            "a run that adapts its mesh is one run; "
+                            "refinement cycles (Number of cycles = "
+                              + std::to_string(cycles)
+                              + ") repeat runs on meshes refined between "
+                                "them. Set Number of cycles = 1, or Adapt "
+                                "during run = false.");
+    VPContactCheckParameter(minimum_level <= maximum_level,
+                            "Mesh refinement/Minimum level",
+                            minimum_level,
+                            "it is above Maximum level = "
+                              + std::to_string(maximum_level) + ".");
+    VPContactCheckParameter((refinement == Strategy::uniform && !during_run)
+                              || refine_fraction > 0.
+                              || (cycles == 1 && !during_run),
                             "Mesh refinement/Refinement fraction",
                             refine_fraction,
                             "adaptive cycles with nothing to refine repeat "
@@ -221,7 +273,35 @@ namespace VPContact
   bool
   MeshRefinement<dim>::needs_indicators() const
   {
-    return cycles > 1 && refinement == Strategy::adaptive;
+    return (cycles > 1 && refinement == Strategy::adaptive) || during_run;
+  }
+
+
+
+  template <int dim>
+  bool
+  MeshRefinement<dim>::adapts_during_run() const
+  {
+    return during_run;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MeshRefinement<dim>::adapt_every() const
+  {
+    return every_steps;
+  }
+
+
+
+  template <int dim>
+  bool
+  MeshRefinement<dim>::adapts_after_step(const unsigned int n,
+                                         const unsigned int n_steps) const
+  {
+    return during_run && n > 0 && n < n_steps && n % every_steps == 0;
   }
 
 
@@ -265,6 +345,47 @@ namespace VPContact
         triangulation.refine_global(1);
         return;
       }
+    flag_cells(triangulation,
+               indicators,
+               uniform_boundary_ids,
+               "The next adaptive cycle (" + size_entries().substr(2) + ")");
+    triangulation.execute_coarsening_and_refinement();
+  }
+
+
+  template <int dim>
+  bool
+  MeshRefinement<dim>::flag_for_adaptation(
+    parallel::TriangulationBase<dim>   &triangulation,
+    const Vector<float>                &indicators,
+    const std::set<types::boundary_id> &uniform_boundary_ids) const
+  {
+    flag_cells(triangulation,
+               indicators,
+               uniform_boundary_ids,
+               "The adaptation during the run (Mesh refinement/Refinement "
+               "fraction = "
+                 + to_text(refine_fraction) + ", Maximum level = "
+                 + std::to_string(maximum_level) + ")");
+    bool flagged = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned()
+          && (cell->refine_flag_set() || cell->coarsen_flag_set()))
+        flagged = true;
+    return Utilities::MPI::logical_or(flagged,
+                                      triangulation.get_communicator());
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::flag_cells(
+    parallel::TriangulationBase<dim>   &triangulation,
+    const Vector<float>                &indicators,
+    const std::set<types::boundary_id> &uniform_boundary_ids,
+    const std::string                  &what) const
+  {
     flag_adaptively(triangulation, indicators);
 
     // The contact cells move together: if one of them is to be refined, all
@@ -295,8 +416,7 @@ namespace VPContact
           for (const auto &cell : cells)
             cell->set_refine_flag();
       }
-    check_memory_of_next_mesh(triangulation);
-    triangulation.execute_coarsening_and_refinement();
+    check_memory_of_next_mesh(triangulation, what);
   }
 
 
@@ -304,7 +424,8 @@ namespace VPContact
   template <int dim>
   void
   MeshRefinement<dim>::check_memory_of_next_mesh(
-    const parallel::TriangulationBase<dim> &triangulation) const
+    const parallel::TriangulationBase<dim> &triangulation,
+    const std::string                      &what) const
   {
     // Each cell flagged for refinement becomes 2^dim cells; coarsening
     // (which may not happen) is not counted.
@@ -318,8 +439,7 @@ namespace VPContact
                         + (std::pow(2., dim) - 1) * flagged,
                       triangulation.n_cells(0),
                       false,
-                      "The next adaptive cycle (" + size_entries().substr(2)
-                        + ")",
+                      what,
                       triangulation.get_communicator());
   }
 
@@ -351,14 +471,69 @@ namespace VPContact
         indicators,
         refine_fraction,
         coarsen_fraction);
+    clear_flags_beyond_levels(triangulation);
+    if (maximum_cells > 0)
+      keep_within_budget(*distributed, indicators);
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::clear_flags_beyond_levels(
+    parallel::TriangulationBase<dim> &triangulation) const
+  {
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           if (cell->level() >= static_cast<int>(maximum_level))
             cell->clear_refine_flag();
-          if (cell->level() == 0)
+          if (cell->level() <= static_cast<int>(minimum_level))
             cell->clear_coarsen_flag();
         }
+  }
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::keep_within_budget(
+    parallel::distributed::Triangulation<dim> &triangulation,
+    const Vector<float>                       &indicators) const
+  {
+    // The cells the flags would make: each refined cell becomes 2^dim, each
+    // coarsened family one. Within the budget the flags stand; else deal.II
+    // flags the same fractions of the cells by their indicators, and
+    // lowers the refined fraction until the mesh fits.
+    double n_refined = 0, n_coarsened = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          n_refined += cell->refine_flag_set() ? 1 : 0;
+          n_coarsened += cell->coarsen_flag_set() ? 1 : 0;
+        }
+    const MPI_Comm communicator = triangulation.get_communicator();
+    n_refined   = Utilities::MPI::sum(n_refined, communicator);
+    n_coarsened = Utilities::MPI::sum(n_coarsened, communicator);
+    const double per_level = std::pow(2., dim);
+    const double n_cells   = triangulation.n_global_active_cells();
+    if (n_cells + (per_level - 1) * n_refined
+          - (1 - 1 / per_level) * n_coarsened
+        <= maximum_cells)
+      return;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->clear_refine_flag();
+          cell->clear_coarsen_flag();
+        }
+    parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+      triangulation,
+      indicators,
+      n_refined / n_cells,
+      n_coarsened / n_cells,
+      maximum_cells);
+    clear_flags_beyond_levels(triangulation);
   }
 
 
@@ -380,6 +555,25 @@ namespace VPContact
            + (step_from_estimate ? ", k from the error estimate" :
               refine_time_step   ? ", k proportional to h" :
                                    ", k fixed");
+  }
+
+
+
+  template <int dim>
+  std::string
+  MeshRefinement<dim>::run_description() const
+  {
+    if (!during_run)
+      return "";
+    return "every " + std::to_string(every_steps) + " steps, "
+           + to_text(refine_fraction)
+           + (fixed_fraction ? " of the indicator" : " of the cells")
+           + " refined, " + to_text(coarsen_fraction) + " coarsened, levels "
+           + std::to_string(minimum_level) + " to "
+           + std::to_string(maximum_level)
+           + (maximum_cells > 0 ?
+                ", at most " + std::to_string(maximum_cells) + " cells" :
+                std::string());
   }
 
 

@@ -81,6 +81,18 @@ namespace VPContact
 
 
 
+  template <int dim>
+  void
+  Physics<dim>::read_transferred_state(
+    const LA::MPI::Vector                            &sets_owned,
+    const LA::MPI::Vector                            &sets,
+    const std::function<double(const std::string &)> &counter)
+  {
+    read_checkpoint(sets_owned, sets, counter);
+  }
+
+
+
   template class Physics<2>;
   template class Physics<3>;
 } // namespace VPContact

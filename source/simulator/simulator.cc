@@ -130,6 +130,7 @@ namespace VPContact
                    "one cycle as a single run."));
     displacement_problem.check_stability_limits();
     check_simplex_support();
+    check_adaptation_schedule();
   }
 
 
@@ -227,25 +228,7 @@ namespace VPContact
     // The mesh's degrees of freedom, quadrature data, damage problem and
     // matrix; returns the first step to compute.
     start_cycle(cycle);
-    setup_dofs();
-    displacement_problem.setup_stress_history();
-    // The estimate recovers its fields on a physics object's scalar node
-    // space (the damage block) where there is one, else on a space of its
-    // own.
-    std::optional<ScalarNodeSpace<dim>> nodes;
-    for (Physics<dim> *object : physics)
-      {
-        object->setup_on_mesh(access(), displacement_problem.solution_blocks());
-        if (!nodes)
-          nodes = object->node_space();
-      }
-    displacement_problem.update_ghosted_solution();
-    if (error_estimator.is_active())
-      error_estimator.setup(*mesh,
-                            displacement_problem.cells(),
-                            displacement_problem.kinematics(),
-                            displacement_problem.history(),
-                            nodes ? &*nodes : nullptr);
+    setup_on_mesh();
     // A resumed run takes the state of its checkpoint's step and continues
     // after it (simulator_checkpoint.cc).
     const unsigned int first_step
@@ -284,6 +267,9 @@ namespace VPContact
             solve_step(n);
             step_timer.stop();
             finish_step(n, step_timer.wall_time());
+            if (convergence_study.refinement().adapts_after_step(
+                  n, time_discretization.n_steps()))
+              adapt_mesh(n);
             if (signal_catcher || checkpointing.writes_periodically())
               if (checkpoint_after_step(n))
                 return true;

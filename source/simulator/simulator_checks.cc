@@ -1,5 +1,5 @@
 // The simulator's check of the input across sections: what a mesh of
-// triangles (tetrahedra) cannot do.
+// triangles (tetrahedra) cannot do, and when an adapting run estimates.
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/simulator/simulator.h>
 
@@ -26,6 +26,13 @@ namespace VPContact
       "adaptive cycles need hanging nodes, which deal.II 9.4 does not make "
       "on "
         + cells + ". Use Strategy = uniform, or a mesh of " + other + ".");
+    VPContactCheckParameter(
+      !convergence_study.refinement().adapts_during_run(),
+      "Mesh refinement/Adapt during run",
+      "true",
+      "adapting a mesh needs hanging nodes, which deal.II 9.4 does not make "
+      "on "
+        + cells + ". Set it to false, or use a mesh of " + other + ".");
     const auto &reference = convergence_study.reference();
     VPContactCheckParameter(
       !reference.writes_snapshots() && !reference.compares(),
@@ -43,6 +50,26 @@ namespace VPContact
         + ". Set Checkpoint/Every steps = 0, Every seconds = 0 and Resume "
           "from checkpoint = false on a mesh of "
         + cells + ".");
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_adaptation_schedule() const
+  {
+    // An adaptation refines by the indicators of its own step, which must
+    // therefore be estimated.
+    const auto &refinement = convergence_study.refinement();
+    VPContactCheckParameter(
+      !refinement.adapts_during_run()
+        || error_estimator.estimates_step(refinement.adapt_every(),
+                                          refinement.adapt_every() + 1),
+      "Mesh refinement/Adapt every",
+      refinement.adapt_every(),
+      "the mesh adapts by the error indicators of the step it adapts after, "
+      "and Error estimate/Every steps does not estimate that step. Make "
+      "Adapt every a multiple of Every steps.");
   }
 
 

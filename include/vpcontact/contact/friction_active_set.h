@@ -264,9 +264,11 @@ namespace VPContact
     write_state(LA::MPI::Vector &state) const;
 
     /// The inverse of write_state(), from a ghosted @p state, for every
-    /// node this rank sees. Throws if a value is not a status.
+    /// node this rank sees. Throws if a value is not a status, unless
+    /// @p interpolated (a state carried to a new mesh): then such a node
+    /// sticks, and a slip direction of another length is normalized.
     void
-    read_state(const LA::MPI::Vector &state);
+    read_state(const LA::MPI::Vector &state, const bool interpolated = false);
 
   private:
     /// Tangential vectors in the coordinates of a node's tangent basis

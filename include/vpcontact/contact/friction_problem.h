@@ -170,7 +170,21 @@ namespace VPContact
       const LA::MPI::Vector                            &sets,
       const std::function<double(const std::string &)> &counter) override;
 
+    /// As read_checkpoint(), with the sets interpolated onto a new mesh:
+    /// a node with no valid set starts in the stick set.
+    void
+    read_transferred_state(
+      const LA::MPI::Vector                            &sets_owned,
+      const LA::MPI::Vector                            &sets,
+      const std::function<double(const std::string &)> &counter) override;
+
   private:
+    /// read_checkpoint() and read_transferred_state().
+    void
+    read_state(const LA::MPI::Vector                            &sets,
+               const std::function<double(const std::string &)> &counter,
+               const bool interpolated);
+
     const TrescaFriction<dim> &friction;
     const MPI_Comm             communicator;
     FrictionActiveSet<dim>     active_set;

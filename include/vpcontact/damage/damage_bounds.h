@@ -152,9 +152,11 @@ namespace VPContact
     write_state(LA::MPI::Vector &state) const;
 
     /// The inverse of write_state(), from a ghosted @p state, for every
-    /// relevant node. Throws if a value is not a set.
+    /// relevant node. Throws if a value is not a set, unless
+    /// @p interpolated (a state carried to a new mesh): then such a node
+    /// is free.
     void
-    read_state(const LA::MPI::Vector &state);
+    read_state(const LA::MPI::Vector &state, const bool interpolated = false);
 
   private:
     std::vector<types::global_dof_index> dofs;

@@ -146,7 +146,21 @@ namespace VPContact
       const LA::MPI::Vector                            &sets,
       const std::function<double(const std::string &)> &counter) override;
 
+    /// As read_checkpoint(), with the sets interpolated onto a new mesh:
+    /// a node with no valid set starts in the free set.
+    void
+    read_transferred_state(
+      const LA::MPI::Vector                            &sets_owned,
+      const LA::MPI::Vector                            &sets,
+      const std::function<double(const std::string &)> &counter) override;
+
   private:
+    /// read_checkpoint() and read_transferred_state().
+    void
+    read_state(const LA::MPI::Vector                            &sets_owned,
+               const std::function<double(const std::string &)> &counter,
+               const bool interpolated);
+
     // damage_problem.cc
     void
     setup_mass_and_bounds();

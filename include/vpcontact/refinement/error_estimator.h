@@ -133,6 +133,11 @@ namespace VPContact
     const Vector<float> &
     cell_indicators() const;
 
+    /// The space indicator of each locally owned cell at the last step
+    /// estimated (what an adaptation during the run refines by).
+    const Vector<float> &
+    last_step_indicators() const;
+
     /// The largest values so far, for a checkpoint.
     std::map<std::string, double>
     running_maxima() const;
@@ -254,6 +259,7 @@ namespace VPContact
 
     ErrorEstimate largest_sum, largest_part;
     Vector<float> indicators;
+    Vector<float> step_indicators;
   };
 } // namespace VPContact
 

@@ -1,6 +1,7 @@
-// Refinement between runs: the section "Mesh refinement" (how many cycles,
-// uniform or adaptive, by which criterion), and the next mesh and time step
-// that the error indicators of a run lead to.
+// Refinement between runs and during a run: the section "Mesh refinement"
+// (how many cycles, uniform or adaptive, by which criterion, whether and how
+// often the mesh adapts during a run), and the flags that the error
+// indicators lead to.
 #ifndef vpcontact_mesh_refinement_h
 #define vpcontact_mesh_refinement_h
 
@@ -65,9 +66,34 @@ namespace VPContact
     size_entries() const;
 
     /// Whether the run needs error indicators (adaptive, more than one
-    /// cycle).
+    /// cycle; or adapting during the run).
     bool
     needs_indicators() const;
+
+    /// Whether the mesh adapts during the run (Adapt during run).
+    bool
+    adapts_during_run() const;
+
+    /// The steps between two adaptations during the run (Adapt every).
+    unsigned int
+    adapt_every() const;
+
+    /// Whether the mesh adapts after step @p n of a run of @p n_steps
+    /// steps: every Adapt every steps, never after step 0 or the last.
+    bool
+    adapts_after_step(const unsigned int n, const unsigned int n_steps) const;
+
+    /**
+     * Flag the cells of @p triangulation for an adaptation during the run
+     * by the indicators @p indicators, as refine() flags them for an
+     * adaptive cycle; returns whether any cell is flagged (on any rank).
+     * The caller executes the change.
+     */
+    bool
+    flag_for_adaptation(
+      parallel::TriangulationBase<dim>   &triangulation,
+      const Vector<float>                &indicators,
+      const std::set<types::boundary_id> &uniform_boundary_ids) const;
 
     /**
      * The number of times the time step of the parameter file is halved in
@@ -101,16 +127,38 @@ namespace VPContact
     std::string
     description() const;
 
+    /// A one-line description of the adaptation during the run, or "".
+    std::string
+    run_description() const;
+
   private:
+    /// The flags of an adaptive refinement, contact cells at one level and
+    /// the memory of the next mesh checked.
+    void
+    flag_cells(parallel::TriangulationBase<dim>   &triangulation,
+               const Vector<float>                &indicators,
+               const std::set<types::boundary_id> &uniform_boundary_ids,
+               const std::string                  &what) const;
     void
     flag_adaptively(parallel::TriangulationBase<dim> &triangulation,
                     const Vector<float>              &indicators) const;
+    /// No refinement beyond Maximum level, no coarsening below Minimum
+    /// level.
+    void
+    clear_flags_beyond_levels(
+      parallel::TriangulationBase<dim> &triangulation) const;
+    /// Refine only the cells with the largest indicators that keep the
+    /// mesh within Maximum cells.
+    void
+    keep_within_budget(parallel::distributed::Triangulation<dim> &triangulation,
+                       const Vector<float> &indicators) const;
 
     /// Throw a message naming the entries if the mesh that the refinement
     /// flags of @p triangulation make cannot fit in memory.
     void
     check_memory_of_next_mesh(
-      const parallel::TriangulationBase<dim> &triangulation) const;
+      const parallel::TriangulationBase<dim> &triangulation,
+      const std::string                      &what) const;
 
     unsigned int cycles             = 1;
     Strategy     refinement         = Strategy::uniform;
@@ -118,6 +166,10 @@ namespace VPContact
     double       refine_fraction    = 0.3;
     double       coarsen_fraction   = 0.;
     unsigned int maximum_level      = 10;
+    unsigned int minimum_level      = 0;
+    unsigned int maximum_cells      = 0;
+    bool         during_run         = false;
+    unsigned int every_steps        = 10;
     bool         refine_time_step   = true;
     bool         step_from_estimate = false;
   };

@@ -139,6 +139,20 @@ namespace VPContact
                     const LA::MPI::Vector &sets,
                     const std::function<double(const std::string &)> &counter)
       = 0;
+
+    /**
+     * After the mesh changed during the run (setup_on_mesh() done on the
+     * new mesh): the state write_checkpoint() wrote on the old mesh,
+     * interpolated onto the new one. A node between nodes of different
+     * sets holds no valid set; it starts where the object's iteration
+     * starts a node it knows nothing of. The default reads it as a
+     * checkpoint.
+     */
+    virtual void
+    read_transferred_state(
+      const LA::MPI::Vector                            &sets_owned,
+      const LA::MPI::Vector                            &sets,
+      const std::function<double(const std::string &)> &counter);
   };
 } // namespace VPContact
 

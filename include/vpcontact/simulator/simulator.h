@@ -25,6 +25,7 @@
 #include <vpcontact/problem_data/initial_conditions.h>
 #include <vpcontact/refinement/convergence_study.h>
 #include <vpcontact/refinement/error_estimator.h>
+#include <vpcontact/refinement/mesh_transfer.h>
 #include <vpcontact/simulator/displacement_problem.h>
 #include <vpcontact/simulator/physics.h>
 #include <vpcontact/simulator/simulator_access.h>
@@ -71,6 +72,8 @@ namespace VPContact
    * - simulator_cycles.cc: the start of a refinement cycle, the next mesh,
    *   the snapshot that ConvergenceStudy compares with a reference;
    * - simulator_setup.cc: mesh and degrees of freedom;
+   * - simulator_adaptation.cc: the setup of everything on a mesh, and the
+   *   adaptation of the mesh during a run with the state carried over;
    * - simulator_checks.cc: checks of the input across sections;
    * - simulator_output.cc: statistics, screen and field output;
    * - simulator_checkpoint.cc: writing a checkpoint, and resuming from one.
@@ -129,6 +132,8 @@ namespace VPContact
     void
     check_simplex_support() const;
     void
+    check_adaptation_schedule() const;
+    void
     compute_initial_state();
     void
     solve_step(const unsigned int n);
@@ -140,6 +145,17 @@ namespace VPContact
     refine_mesh();
     Snapshot<dim>
     make_snapshot(const double time) const;
+
+    // simulator_adaptation.cc
+    void
+    setup_on_mesh();
+    void
+    adapt_mesh(const unsigned int n);
+    void
+    receive_state(MeshTransfer<dim>                   &transfer,
+                  const std::map<std::string, double> &counters,
+                  const unsigned int                   n,
+                  const unsigned int                   n_recorded);
 
     // simulator_setup.cc
     void
