@@ -59,42 +59,10 @@ namespace VPContact
                         "No cell is refined beyond this many levels above "
                         "the coarse mesh (including Geometry/Global "
                         "refinements).");
-      prm.declare_entry("Minimum level",
-                        "0",
-                        Patterns::Integer(0, 20),
-                        "Adaptive only: no cell is coarsened to fewer levels "
-                        "than this above the coarse mesh.");
-      prm.declare_entry(
-        "Maximum cells",
-        "0",
-        Patterns::Integer(0),
-        "Adaptive only: a cell budget. Where the flags of Refinement "
-        "criterion would make a mesh of more cells, only the cells with the "
-        "largest indicators that keep it within the budget are refined "
-        "(deal.II's refine_and_coarsen_fixed_number with max_n_cells). 0: "
-        "no budget.");
-      prm.declare_entry(
-        "Adapt during run",
-        "false",
-        Patterns::Bool(),
-        "Refine and coarsen the mesh during the run, after every 'Adapt "
-        "every' steps, by the error estimate's cell indicators of that step "
-        "(Refinement criterion, Refinement fraction, Coarsening fraction, "
-        "Maximum level, Minimum level, Maximum cells); the displacement, the "
-        "damage, their increments, the stress history at the quadrature "
-        "points and the active sets are carried to the new mesh "
-        "(doc/adaptivity.md). Needs a mesh of quadrilaterals (hexahedra) and "
-        "Number of cycles = 1.");
-      prm.declare_entry("Adapt every",
-                        "10",
-                        Patterns::Integer(1),
-                        "With Adapt during run: the steps between two "
-                        "adaptations. A multiple of Error estimate/Every "
-                        "steps, so that the step of an adaptation is "
-                        "estimated.");
     }
     prm.leave_subsection();
     declare_time_step_entries(prm);
+    declare_run_entries(prm);
   }
 
 
@@ -279,34 +247,6 @@ namespace VPContact
 
 
   template <int dim>
-  bool
-  MeshRefinement<dim>::adapts_during_run() const
-  {
-    return during_run;
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  MeshRefinement<dim>::adapt_every() const
-  {
-    return every_steps;
-  }
-
-
-
-  template <int dim>
-  bool
-  MeshRefinement<dim>::adapts_after_step(const unsigned int n,
-                                         const unsigned int n_steps) const
-  {
-    return during_run && n > 0 && n < n_steps && n % every_steps == 0;
-  }
-
-
-
-  template <int dim>
   unsigned int
   MeshRefinement<dim>::time_step_halvings(const double h_first,
                                           const double h) const
@@ -350,30 +290,6 @@ namespace VPContact
                uniform_boundary_ids,
                "The next adaptive cycle (" + size_entries().substr(2) + ")");
     triangulation.execute_coarsening_and_refinement();
-  }
-
-
-  template <int dim>
-  bool
-  MeshRefinement<dim>::flag_for_adaptation(
-    parallel::TriangulationBase<dim>   &triangulation,
-    const Vector<float>                &indicators,
-    const std::set<types::boundary_id> &uniform_boundary_ids) const
-  {
-    flag_cells(triangulation,
-               indicators,
-               uniform_boundary_ids,
-               "The adaptation during the run (Mesh refinement/Refinement "
-               "fraction = "
-                 + to_text(refine_fraction) + ", Maximum level = "
-                 + std::to_string(maximum_level) + ")");
-    bool flagged = false;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned()
-          && (cell->refine_flag_set() || cell->coarsen_flag_set()))
-        flagged = true;
-    return Utilities::MPI::logical_or(flagged,
-                                      triangulation.get_communicator());
   }
 
 
@@ -496,49 +412,6 @@ namespace VPContact
 
 
   template <int dim>
-  void
-  MeshRefinement<dim>::keep_within_budget(
-    parallel::distributed::Triangulation<dim> &triangulation,
-    const Vector<float>                       &indicators) const
-  {
-    // The cells the flags would make: each refined cell becomes 2^dim, each
-    // coarsened family one. Within the budget the flags stand; else deal.II
-    // flags the same fractions of the cells by their indicators, and
-    // lowers the refined fraction until the mesh fits.
-    double n_refined = 0, n_coarsened = 0;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          n_refined += cell->refine_flag_set() ? 1 : 0;
-          n_coarsened += cell->coarsen_flag_set() ? 1 : 0;
-        }
-    const MPI_Comm communicator = triangulation.get_communicator();
-    n_refined   = Utilities::MPI::sum(n_refined, communicator);
-    n_coarsened = Utilities::MPI::sum(n_coarsened, communicator);
-    const double per_level = std::pow(2., dim);
-    const double n_cells   = triangulation.n_global_active_cells();
-    if (n_cells + (per_level - 1) * n_refined
-          - (1 - 1 / per_level) * n_coarsened
-        <= maximum_cells)
-      return;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->clear_refine_flag();
-          cell->clear_coarsen_flag();
-        }
-    parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-      triangulation,
-      indicators,
-      n_refined / n_cells,
-      n_coarsened / n_cells,
-      maximum_cells);
-    clear_flags_beyond_levels(triangulation);
-  }
-
-
-
-  template <int dim>
   std::string
   MeshRefinement<dim>::description() const
   {
@@ -555,25 +428,6 @@ namespace VPContact
            + (step_from_estimate ? ", k from the error estimate" :
               refine_time_step   ? ", k proportional to h" :
                                    ", k fixed");
-  }
-
-
-
-  template <int dim>
-  std::string
-  MeshRefinement<dim>::run_description() const
-  {
-    if (!during_run)
-      return "";
-    return "every " + std::to_string(every_steps) + " steps, "
-           + to_text(refine_fraction)
-           + (fixed_fraction ? " of the indicator" : " of the cells")
-           + " refined, " + to_text(coarsen_fraction) + " coarsened, levels "
-           + std::to_string(minimum_level) + " to "
-           + std::to_string(maximum_level)
-           + (maximum_cells > 0 ?
-                ", at most " + std::to_string(maximum_cells) + " cells" :
-                std::string());
   }
 
 

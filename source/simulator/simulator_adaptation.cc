@@ -66,14 +66,17 @@ namespace VPContact
     sets = sets_owned;
     const std::array<LA::MPI::Vector, 3> increments
       = displacement_problem.increments_for_checkpoint();
-    const auto estimate_maxima =
-      error_estimator.is_active() ? error_estimator.running_maxima() :
-                                    std::map<std::string, double>();
-    const unsigned int n_recorded =
-      displacement_problem.predictor().n_recorded();
+    const auto         estimate_maxima = error_estimator.is_active() ?
+                                           error_estimator.running_maxima() :
+                                           std::map<std::string, double>();
+    const unsigned int n_recorded
+      = displacement_problem.predictor().n_recorded();
 
-    auto *const distributed =
-      dynamic_cast<parallel::distributed::Triangulation<dim> *>(mesh.get());
+    // The fields of the step may still be written in the background from
+    // the old mesh: that must end before the mesh changes.
+    output_writer.finish_field_output(mpi_communicator);
+    auto *const distributed
+      = dynamic_cast<parallel::distributed::Triangulation<dim> *>(mesh.get());
     AssertThrow(distributed != nullptr, ExcInternalError());
     MeshTransfer<dim> transfer(*distributed,
                                dof_handler,
@@ -92,19 +95,19 @@ namespace VPContact
       error_estimator.restore_running_maxima(estimate_maxima);
     displacement_problem.assemble_stiffness_matrix();
     displacement_problem.initialize_linear_solver();
-    pcout << "  mesh adapted after step " << n << ": " << cells_before
-          << " -> " << mesh->n_global_active_cells() << " cells, "
-          << dof_handler.n_dofs() << " dofs" << std::endl;
+    pcout << "  mesh adapted after step " << n << ": " << cells_before << " -> "
+          << mesh->n_global_active_cells() << " cells, " << dof_handler.n_dofs()
+          << " dofs" << std::endl;
   }
 
 
 
   template <int dim>
   void
-  Simulator<dim>::receive_state(MeshTransfer<dim> &transfer,
+  Simulator<dim>::receive_state(MeshTransfer<dim>                   &transfer,
                                 const std::map<std::string, double> &counters,
                                 const unsigned int                   n,
-                                const unsigned int n_recorded)
+                                const unsigned int                   n_recorded)
   {
     // The vectors and the history on the new mesh. Values at hanging nodes
     // are set from the nodes they hang on, as the constraints of every

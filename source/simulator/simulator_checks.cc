@@ -20,19 +20,19 @@ namespace VPContact
     const std::string cells = (dim == 2 ? "triangles" : "tetrahedra");
     const std::string other = (dim == 2 ? "quadrilaterals" : "hexahedra");
     VPContactCheckParameter(
-      !convergence_study.refinement().needs_indicators(),
-      "Mesh refinement/Strategy",
-      "adaptive",
-      "adaptive cycles need hanging nodes, which deal.II 9.4 does not make "
-      "on "
-        + cells + ". Use Strategy = uniform, or a mesh of " + other + ".");
-    VPContactCheckParameter(
       !convergence_study.refinement().adapts_during_run(),
       "Mesh refinement/Adapt during run",
       "true",
       "adapting a mesh needs hanging nodes, which deal.II 9.4 does not make "
       "on "
         + cells + ". Set it to false, or use a mesh of " + other + ".");
+    VPContactCheckParameter(
+      !convergence_study.refinement().needs_indicators(),
+      "Mesh refinement/Strategy",
+      "adaptive",
+      "adaptive cycles need hanging nodes, which deal.II 9.4 does not make "
+      "on "
+        + cells + ". Use Strategy = uniform, or a mesh of " + other + ".");
     const auto &reference = convergence_study.reference();
     VPContactCheckParameter(
       !reference.writes_snapshots() && !reference.compares(),

@@ -192,6 +192,10 @@ namespace VPContact
                 " (" + discretization.description() + ")" :
                 std::string())
           << ", " << dof_handler.n_dofs() << " dofs" << '\n'
+          << (convergence_study.refinement().adapts_during_run() ?
+                "  adapting the mesh: "
+                  + convergence_study.refinement().run_description() + '\n' :
+                std::string())
           << "  time: T = " << time_discretization.end_time()
           << ", k = " << time_discretization.step_size() << ", "
           << time_discretization.n_steps() << " steps\n";

@@ -26,12 +26,13 @@ namespace VPContact
    * mesh, 20 steps of 0.02, a friction bound of 20 so that the contact
    * nodes go from stick to slip during the run, the gradient damage with
    * its bounds, the stress history; output in @p directory, a checkpoint
-   * every @p every_steps steps.
+   * every @p every_steps steps; then the parameter file text @p extra.
    */
   inline void
   set_checkpoint_scene(ParameterHandler  &prm,
                        const std::string &directory,
-                       const unsigned int every_steps)
+                       const unsigned int every_steps,
+                       const std::string &extra = "")
   {
     Simulator<2>::declare_parameters(prm);
     prm.parse_input(SOURCE_DIR "/../../prm/paper_fig1.prm");
@@ -59,6 +60,8 @@ namespace VPContact
     prm.enter_subsection("Checkpoint");
     prm.set("Every steps", std::to_string(every_steps));
     prm.leave_subsection();
+    if (!extra.empty())
+      prm.parse_input_from_string(extra);
   }
 
   /**

@@ -41,6 +41,10 @@ namespace VPContact
     declare_parameters(ParameterHandler &prm);
     static void
     declare_time_step_entries(ParameterHandler &prm);
+    /// The entries of the adaptation during a run, and the limits it
+    /// shares with adaptive cycles (mesh_refinement_during_run.cc).
+    static void
+    declare_run_entries(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
 
