@@ -100,7 +100,7 @@ namespace VPContact
   void
   QuadratureFieldTransfer<dim>::coarsen(const std::vector<double> &children,
                                         const unsigned int         n_values,
-                                        std::vector<double> &parent) const
+                                        std::vector<double>       &parent) const
   {
     // a_q = (1 / w_q) sum_c sum_q' L_q(x_c,q') (w_q' / 2^dim) v_c,q'.
     const unsigned int n_q = weights.size();
@@ -112,8 +112,8 @@ namespace VPContact
           const double *v = &children[(c * n_q + qc) * n_values];
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const double factor
-                = child_values[c](qc, q) * weights[qc] / n_children / weights[q];
+              const double factor = child_values[c](qc, q) * weights[qc]
+                                    / n_children / weights[q];
               for (unsigned int i = 0; i < n_values; ++i)
                 parent[q * n_values + i] += factor * v[i];
             }

@@ -267,8 +267,8 @@ namespace VPContact
             solve_step(n);
             step_timer.stop();
             finish_step(n, step_timer.wall_time());
-            if (convergence_study.refinement().adapts_after_step(
-                  n, time_discretization.n_steps()))
+            if (convergence_study.refinement()
+                  .adapts_after_step(n, time_discretization.n_steps()))
               adapt_mesh(n);
             if (signal_catcher || checkpointing.writes_periodically())
               if (checkpoint_after_step(n))

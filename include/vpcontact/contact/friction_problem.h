@@ -183,7 +183,7 @@ namespace VPContact
     void
     read_state(const LA::MPI::Vector                            &sets,
                const std::function<double(const std::string &)> &counter,
-               const bool interpolated);
+               const bool                                        interpolated);
 
     const TrescaFriction<dim> &friction;
     const MPI_Comm             communicator;

@@ -159,7 +159,7 @@ namespace VPContact
     void
     read_state(const LA::MPI::Vector                            &sets_owned,
                const std::function<double(const std::string &)> &counter,
-               const bool interpolated);
+               const bool                                        interpolated);
 
     // damage_problem.cc
     void

@@ -69,10 +69,10 @@ namespace VPContact
           StressHistory<dim>        &history,
           const cell_iterator       &cell) const;
 
-    parallel::distributed::Triangulation<dim>                     &mesh;
+    parallel::distributed::Triangulation<dim>                    &mesh;
     parallel::distributed::SolutionTransfer<dim, LA::MPI::Vector> solution;
-    const QuadratureFieldTransfer<dim>                             fields;
-    unsigned int                                                   handle = 0;
+    const QuadratureFieldTransfer<dim>                            fields;
+    unsigned int                                                  handle = 0;
   };
 } // namespace VPContact
 
