@@ -35,6 +35,9 @@ def arguments():
     p.add_argument("--out", help="folder of the PNG files (default: a "
                    "folder 'pictures' beside the .pvd file)")
     p.add_argument("--size", default="1200x800", help="pixels, WxH")
+    p.add_argument("--edges", action="store_true",
+                   help="draw the cells' edges on the field pictures too "
+                   "(a mesh that adapts during the run)")
     return p.parse_args()
 
 
@@ -42,10 +45,10 @@ def nearest(available, wanted):
     return min(available, key=lambda t: abs(t - wanted))
 
 
-def picture(view, source, field, association, title, path):
+def picture(view, source, field, association, title, path, edges=False):
     """Colour the deformed body by one field and save the view."""
     display = pv.Show(source, view)
-    display.SetRepresentationType("Surface")
+    display.SetRepresentationType("Surface With Edges" if edges else "Surface")
     pv.ColorBy(display, (association, field))
     display.RescaleTransferFunctionToDataRange(True, False)
     display.SetScalarBarVisibility(view, True)
@@ -100,7 +103,8 @@ def main():
         for field, association, title in FIELDS:
             if (association, field) in present:
                 path = os.path.join(out, f"{field}_t{t:g}.png")
-                picture(view, warp, field, association, title, path)
+                picture(view, warp, field, association, title, path,
+                        a.edges)
                 print(path)
         path = os.path.join(out, f"mesh_t{t:g}.png")
         mesh_picture(view, warp, path)
