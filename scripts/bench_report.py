@@ -432,6 +432,7 @@ def setup_scaling(csv_path):
 
 def write_report(out, csv_path, rows):
     import bench_goals  # noqa: E402  (it imports this module)
+    import adaptive_run_report  # noqa: E402  (next to this file)
     import bench_solvers_report  # noqa: E402  (next to this file)
     ok = [r for r in rows if r["status"] == "ok"] or rows
     m = ok[0]
@@ -522,7 +523,9 @@ def write_report(out, csv_path, rows):
         "The goals the project set itself for this program against the "
         "peer, the figures of this run, and what limits them.", "",
     ] + bench_goals.goals(best, sizes, algebras, every) + scene_3d(csv_path) + setup_scaling(
-        csv_path) + bench_solvers_report.solver_choice(csv_path, read_csv)
+        csv_path) + bench_solvers_report.solver_choice(
+            csv_path, read_csv) + adaptive_run_report.adaptation_cost(
+                csv_path, read_csv)
     # One line per reason, listing the runs it concerns.
     reasons = {}
     for r in rows:

@@ -8,6 +8,8 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <optional>
+
 namespace VPContact
 {
   template <int dim>
@@ -44,18 +46,36 @@ namespace VPContact
   {
     // The cells of step n's largest indicators are refined, those of the
     // smallest coarsened (MeshRefinement); nothing to do if no cell is
-    // flagged.
+    // flagged. The timer splits the cost: marking, transfer (with p4est's
+    // repartitioning), and the setup on the new mesh.
     TimerOutput::Scope t(computing_timer, "Mesh adaptation");
     const unsigned int cells_before = mesh->n_global_active_cells();
-    if (!convergence_study.refinement().flag_for_adaptation(
-          *mesh,
-          error_estimator.last_step_indicators(),
-          displacement_problem.boundaries().contact_boundary_ids()))
-      return;
+    {
+      TimerOutput::Scope m(computing_timer, "Mesh adaptation: marking");
+      if (!convergence_study.refinement().flag_for_adaptation(
+            *mesh,
+            error_estimator.last_step_indicators(),
+            displacement_problem.boundaries().contact_boundary_ids()))
+        return;
+    }
+    change_mesh(n);
+    pcout << "  mesh adapted after step " << n << ": " << cells_before << " -> "
+          << mesh->n_global_active_cells() << " cells, " << dof_handler.n_dofs()
+          << " dofs" << std::endl;
+  }
 
+
+
+  template <int dim>
+  void
+  Simulator<dim>::change_mesh(const unsigned int n)
+  {
     // What a checkpoint holds is what step n + 1 starts from: the same
     // vectors go to the new mesh, with the running maxima of the physics
     // objects and of the estimate, which their setup on the new mesh resets.
+    std::optional<TimerOutput::Scope> part(std::in_place,
+                                           computing_timer,
+                                           "Mesh adaptation: transfer");
     LA::MPI::Vector sets_owned(locally_owned_dofs, mpi_communicator);
     std::map<std::string, double> counters;
     for (const Physics<dim> *object : physics)
@@ -89,15 +109,15 @@ namespace VPContact
                      displacement_problem.history());
     mesh->execute_coarsening_and_refinement();
 
+    part.emplace(computing_timer, "Mesh adaptation: setup");
     setup_on_mesh();
+    part.emplace(computing_timer, "Mesh adaptation: transfer");
     receive_state(transfer, counters, n, n_recorded);
+    part.emplace(computing_timer, "Mesh adaptation: setup");
     if (error_estimator.is_active())
       error_estimator.restore_running_maxima(estimate_maxima);
     displacement_problem.assemble_stiffness_matrix();
     displacement_problem.initialize_linear_solver();
-    pcout << "  mesh adapted after step " << n << ": " << cells_before << " -> "
-          << mesh->n_global_active_cells() << " cells, " << dof_handler.n_dofs()
-          << " dofs" << std::endl;
   }
 
 

@@ -152,6 +152,8 @@ namespace VPContact
     void
     adapt_mesh(const unsigned int n);
     void
+    change_mesh(const unsigned int n);
+    void
     receive_state(MeshTransfer<dim>                   &transfer,
                   const std::map<std::string, double> &counters,
                   const unsigned int                   n,
