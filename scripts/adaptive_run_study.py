@@ -30,16 +30,28 @@ UNIFORM = [(f"uniform {2 ** (r + 2)}²", "paper_fig1_uniform.prm",
             f"subsection Geometry\n  set Global refinements = {r}\nend\n"
             f"subsection Time\n  set Time step = {0.1 / 2 ** r!r}\nend\n")
            for r in (3, 4, 5, 6)]
-ADAPTING = [(f"adapting, level {level}, k = {k}",
+# (maximum level, k, adapt every, initial adaptations, global refinements
+# of the start, refinement fraction, coarsening fraction): from coarse and
+# cheap to the reference's own level. Level 7 is the reference's: where the
+# run is as fine as the reference, the error against it leaves out the
+# reference's own error there.
+SETTINGS = ((4, 0.025, 4, 2, 2, 0.3, 0.05),
+            (5, 0.0125, 8, 3, 2, 0.3, 0.05),
+            (6, 0.00625, 16, 3, 3, 0.3, 0.1),
+            (6, 0.00625, 16, 3, 3, 0.5, 0.05),
+            (6, 0.003125, 32, 3, 3, 0.5, 0.05),
+            (7, 0.0125, 16, 4, 3, 0.3, 0.1),
+            (7, 0.00625, 16, 4, 3, 0.3, 0.1))
+ADAPTING = [(f"adapting, level {level}, k = {k}, refine {refine}",
              "paper_fig1_adaptive_run.prm",
              f"subsection Mesh refinement\n  set Maximum level = {level}\n"
-             f"  set Adapt every = {every}\nend\n"
+             f"  set Adapt every = {every}\n"
+             f"  set Initial adaptations = {initial}\n"
+             f"  set Refinement fraction = {refine}\n"
+             f"  set Coarsening fraction = {coarsen}\nend\n"
              f"subsection Geometry\n  set Global refinements = {start}\nend\n"
              f"subsection Time\n  set Time step = {k!r}\nend\n")
-            for level, k, every, start in ((5, 0.0125, 2, 2),
-                                           (6, 0.00625, 4, 3),
-                                           (7, 0.003125, 8, 3),
-                                           (7, 0.0015625, 16, 3))]
+            for level, k, every, initial, start, refine, coarsen in SETTINGS]
 
 
 def cpu_name():

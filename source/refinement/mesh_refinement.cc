@@ -117,6 +117,7 @@ namespace VPContact
     maximum_cells    = prm.get_integer("Maximum cells");
     during_run       = prm.get_bool("Adapt during run");
     every_steps      = prm.get_integer("Adapt every");
+    n_initial        = prm.get_integer("Initial adaptations");
     refine_time_step = prm.get_bool("Refine time step with mesh");
     step_from_estimate = prm.get_bool("Time step from error estimate");
     prm.leave_subsection();

@@ -42,6 +42,16 @@ namespace VPContact
         "points and the active sets are carried to the new mesh "
         "(doc/adaptivity.md). Needs a mesh of quadrilaterals (hexahedra) and "
         "Number of cycles = 1.");
+      prm.declare_entry(
+        "Initial adaptations",
+        "0",
+        Patterns::Integer(0, 20),
+        "With Adapt during run: before the first step, adapt the mesh this "
+        "many times to the error indicators of the initial state, computing "
+        "the initial state again on each new mesh, so that the first steps "
+        "already have the mesh the singularities of the initial state ask "
+        "for (Initial state/Displacement and stress = elastic equilibrium; "
+        "a zero initial state has no indicators and adapts nothing).");
       prm.declare_entry("Adapt every",
                         "10",
                         Patterns::Integer(1),
@@ -69,6 +79,15 @@ namespace VPContact
   MeshRefinement<dim>::adapt_every() const
   {
     return every_steps;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MeshRefinement<dim>::initial_adaptations() const
+  {
+    return during_run ? n_initial : 0;
   }
 
 

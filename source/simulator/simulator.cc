@@ -258,6 +258,11 @@ namespace VPContact
         if (!checkpointing.resume())
           {
             compute_initial_state();
+            for (unsigned int i = 0;
+                 i < convergence_study.refinement().initial_adaptations();
+                 ++i)
+              if (!adapt_initial_mesh())
+                break;
             finish_step(0, 0.);
           }
         for (unsigned int n = first_step; n <= time_discretization.n_steps();

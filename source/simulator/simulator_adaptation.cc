@@ -67,6 +67,47 @@ namespace VPContact
 
 
   template <int dim>
+  bool
+  Simulator<dim>::adapt_initial_mesh()
+  {
+    // The initial state's indicators mark the cells; the new mesh gets the
+    // initial state computed anew rather than transferred, as if the run
+    // had started on it. The estimate of this mesh's step 0 is left out of
+    // the run's largest estimate: the estimator's setup on the new mesh
+    // starts it again.
+    if (!error_estimator.estimates_step(0, time_discretization.n_steps()))
+      return false;
+    estimate_error(0);
+    TimerOutput::Scope t(computing_timer, "Mesh adaptation");
+    const double       largest = Utilities::MPI::max(
+      double(error_estimator.last_step_indicators().linfty_norm()),
+      mpi_communicator);
+    if (largest == 0.)
+      return false; // a zero initial state has nothing to refine
+    const unsigned int cells_before = mesh->n_global_active_cells();
+    {
+      TimerOutput::Scope m(computing_timer, "Mesh adaptation: marking");
+      if (!convergence_study.refinement().flag_for_adaptation(
+            *mesh,
+            error_estimator.last_step_indicators(),
+            displacement_problem.boundaries().contact_boundary_ids()))
+        return false;
+    }
+    TimerOutput::Scope s(computing_timer, "Mesh adaptation: setup");
+    mesh->execute_coarsening_and_refinement();
+    setup_on_mesh();
+    displacement_problem.assemble_stiffness_matrix();
+    displacement_problem.initialize_linear_solver();
+    compute_initial_state();
+    pcout << "  initial mesh adapted: " << cells_before << " -> "
+          << mesh->n_global_active_cells() << " cells, " << dof_handler.n_dofs()
+          << " dofs" << std::endl;
+    return true;
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::change_mesh(const unsigned int n)
   {

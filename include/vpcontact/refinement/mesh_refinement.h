@@ -82,6 +82,11 @@ namespace VPContact
     unsigned int
     adapt_every() const;
 
+    /// The adaptations to the initial state before the first step (Initial
+    /// adaptations; 0 unless the mesh adapts during the run).
+    unsigned int
+    initial_adaptations() const;
+
     /// Whether the mesh adapts after step @p n of a run of @p n_steps
     /// steps: every Adapt every steps, never after step 0 or the last.
     bool
@@ -174,6 +179,7 @@ namespace VPContact
     unsigned int maximum_cells      = 0;
     bool         during_run         = false;
     unsigned int every_steps        = 10;
+    unsigned int n_initial          = 0;
     bool         refine_time_step   = true;
     bool         step_from_estimate = false;
   };

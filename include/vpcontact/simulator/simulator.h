@@ -153,6 +153,8 @@ namespace VPContact
     adapt_mesh(const unsigned int n);
     void
     change_mesh(const unsigned int n);
+    bool
+    adapt_initial_mesh();
     void
     receive_state(MeshTransfer<dim>                   &transfer,
                   const std::map<std::string, double> &counters,
