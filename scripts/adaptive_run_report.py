@@ -22,13 +22,16 @@ def adaptation_cost(csv_path, read_csv):
     lines = [
         "", "## Adapting the mesh during a run", "",
         "The runs of `prm/convergence/paper_fig1_adaptive_run.prm` "
-        "([adaptivity.md](adaptivity.md)): the share of the run's time its "
+        "([adaptivity.md](adaptivity.md)): the share of the run's time "
+        "(without the comparison with the reference) its "
         "mesh adaptations took (the timer's *Mesh adaptation*), split into "
         "marking the cells, the transfer of the state (with p4est's "
         "repartitioning and the wait for the fields being written in the "
         "background) and the setup of every physics object and solver on "
         "the new mesh. Measured by `scripts/adaptive_run_study` "
         f"{rows[0]['measured']}.", "",
+        "*adaptations*: those before the first step and those during the "
+        "run.", "",
         "| run | adaptations | cells at the end | run time [s] | adaptation, "
         "share of the run | marking | transfer | setup |",
         "|---|---|---|---|---|---|---|---|"]
