@@ -301,9 +301,13 @@ namespace VPContact
     parallel::TriangulationBase<dim>   &triangulation,
     const Vector<float>                &indicators,
     const std::set<types::boundary_id> &uniform_boundary_ids,
-    const std::string                  &what) const
+    const std::string                  &what,
+    const bool                          same_on_any_ranks) const
   {
-    flag_adaptively(triangulation, indicators);
+    if (same_on_any_ranks)
+      flag_by_sorted_indicators(triangulation, indicators);
+    else
+      flag_adaptively(triangulation, indicators);
 
     // The contact cells move together: if one of them is to be refined, all
     // are, and none is coarsened. Mesh smoothing (one level difference at

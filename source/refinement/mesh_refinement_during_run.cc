@@ -6,7 +6,11 @@
 
 #include <deal.II/distributed/grid_refinement.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <vector>
 
 namespace VPContact
 {
@@ -115,7 +119,8 @@ namespace VPContact
                "The adaptation during the run (Mesh refinement/Refinement "
                "fraction = "
                  + to_text(refine_fraction)
-                 + ", Maximum level = " + std::to_string(maximum_level) + ")");
+                 + ", Maximum level = " + std::to_string(maximum_level) + ")",
+               true);
     bool flagged = false;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned()
@@ -185,6 +190,96 @@ namespace VPContact
            + (maximum_cells > 0 ?
                 ", at most " + std::to_string(maximum_cells) + " cells" :
                 std::string());
+  }
+
+
+
+  namespace
+  {
+    // Indicators closer than this (relative) count as equal: a run on
+    // another number of ranks computes them with other round-off.
+    constexpr double tie = 1e-6;
+
+    // The number of the first of the @p sorted values (decreasing for
+    // refinement, increasing for coarsening; none negative) that carry
+    // @p fraction of their sum (by_sum) or of their number; the count grows
+    // over values within tie of the last one taken, so that equal
+    // indicators share their fate.
+    std::size_t
+    count_from_top(const std::vector<float> &sorted,
+                   const double              fraction,
+                   const bool                by_sum)
+    {
+      if (fraction <= 0 || sorted.empty())
+        return 0;
+      std::size_t m = 0;
+      if (by_sum)
+        {
+          double total = 0, sum = 0;
+          for (const float v : sorted)
+            total += v;
+          while (m < sorted.size() && sum < fraction * total)
+            sum += sorted[m++];
+        }
+      else
+        m = std::min<std::size_t>(sorted.size(),
+                                  std::lround(fraction * sorted.size()));
+      while (m > 0 && m < sorted.size()
+             && std::abs(sorted[m] - sorted[m - 1])
+                  <= tie * std::abs(sorted[m - 1]))
+        ++m;
+      return m;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::flag_by_sorted_indicators(
+    parallel::TriangulationBase<dim> &triangulation,
+    const Vector<float>              &indicators) const
+  {
+    // Every rank sorts all ranks' indicators, and so finds the same
+    // thresholds: the largest ones carrying Refinement fraction are refined,
+    // the smallest ones carrying Coarsening fraction coarsened; with a cell
+    // budget, only as many refined as keep the mesh within it.
+    std::vector<float> own;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        own.push_back(indicators[cell->active_cell_index()]);
+    std::vector<float> sorted;
+    for (const auto &part :
+         Utilities::MPI::all_gather(triangulation.get_communicator(), own))
+      sorted.insert(sorted.end(), part.begin(), part.end());
+    std::sort(sorted.begin(), sorted.end(), std::greater<float>());
+    const std::vector<float> ascending(sorted.rbegin(), sorted.rend());
+    std::size_t              n_refine
+      = count_from_top(sorted, refine_fraction, fixed_fraction);
+    const std::size_t n_coarsen
+      = std::min(sorted.size() - n_refine,
+                 count_from_top(ascending, coarsen_fraction, fixed_fraction));
+    const double per_level = std::pow(2., dim);
+    while (maximum_cells > 0 && n_refine > 0
+           && sorted.size() + (per_level - 1) * n_refine
+                  - (1 - 1 / per_level) * n_coarsen
+                > maximum_cells)
+      --n_refine;
+    const double refine_above = n_refine > 0 ?
+                                  sorted[n_refine - 1] * (1 - tie) :
+                                  std::numeric_limits<double>::infinity();
+    const double coarsen_below
+      = n_coarsen > 0 ? ascending[n_coarsen - 1] * (1 + tie) : -1.;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const double eta = indicators[cell->active_cell_index()];
+          if (eta >= refine_above)
+            cell->set_refine_flag();
+          else if (eta <= coarsen_below)
+            cell->set_coarsen_flag();
+        }
+    clear_flags_beyond_levels(triangulation);
   }
 
 

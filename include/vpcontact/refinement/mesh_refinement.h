@@ -147,7 +147,17 @@ namespace VPContact
     flag_cells(parallel::TriangulationBase<dim>   &triangulation,
                const Vector<float>                &indicators,
                const std::set<types::boundary_id> &uniform_boundary_ids,
-               const std::string                  &what) const;
+               const std::string                  &what,
+               const bool same_on_any_ranks = false) const;
+    /**
+     * The flags of flag_adaptively() from all ranks' indicators sorted
+     * (mesh_refinement_during_run.cc): the same cells on any number of
+     * ranks, which deal.II's distributed marking, a bisection for the
+     * threshold, does not promise.
+     */
+    void
+    flag_by_sorted_indicators(parallel::TriangulationBase<dim> &triangulation,
+                              const Vector<float> &indicators) const;
     void
     flag_adaptively(parallel::TriangulationBase<dim> &triangulation,
                     const Vector<float>              &indicators) const;
