@@ -130,7 +130,7 @@ def table(runs, cycle_rows):
                else "not reached")
         lines.append(
             f"| {r['name']} | {r['row']['cells']} | {r['row']['k']} | "
-            f"{r['row']['steps']} | {fmt(error)} | "
+            f"{r['row']['steps']} | {error:.4g} | "
             f"{fmt(r['row']['wall_time'])} | "
             + (f"{100 * r['share']:.1f} %" if r["share"] else "–")
             + f" | {cyc} |")
