@@ -117,16 +117,8 @@ namespace VPContact
     std::optional<TimerOutput::Scope> part(std::in_place,
                                            computing_timer,
                                            "Mesh adaptation: transfer");
-    LA::MPI::Vector sets_owned(locally_owned_dofs, mpi_communicator);
-    std::map<std::string, double> counters;
-    for (const Physics<dim> *object : physics)
-      object->write_checkpoint(sets_owned, counters);
-    LA::MPI::Vector sets(locally_owned_dofs,
-                         locally_relevant_dofs,
-                         mpi_communicator);
-    sets = sets_owned;
-    const std::array<LA::MPI::Vector, 3> increments
-      = displacement_problem.increments_for_checkpoint();
+    CarriedState                      state;
+    collect_carried_state(state);
     const auto         estimate_maxima = error_estimator.is_active() ?
                                            error_estimator.running_maxima() :
                                            std::map<std::string, double>();
@@ -142,18 +134,14 @@ namespace VPContact
     MeshTransfer<dim> transfer(*distributed,
                                dof_handler,
                                discretization.quadrature());
-    transfer.prepare({&displacement_problem.ghosted_solution(),
-                      &increments[0],
-                      &increments[1],
-                      &increments[2],
-                      &sets},
+    transfer.prepare(state.vectors(displacement_problem.ghosted_solution()),
                      displacement_problem.history());
     mesh->execute_coarsening_and_refinement();
 
     part.emplace(computing_timer, "Mesh adaptation: setup");
     setup_on_mesh();
     part.emplace(computing_timer, "Mesh adaptation: transfer");
-    receive_state(transfer, counters, n, n_recorded);
+    receive_state(transfer, state.counters, n, n_recorded);
     part.emplace(computing_timer, "Mesh adaptation: setup");
     if (error_estimator.is_active())
       error_estimator.restore_running_maxima(estimate_maxima);

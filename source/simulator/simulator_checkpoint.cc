@@ -138,26 +138,10 @@ namespace VPContact
     // damage source at the quadrature points are recomputed by the next
     // assembly, but are stored with the stress: the resumed state is then
     // the same bits as the uninterrupted one.
-    LA::MPI::Vector sets_owned(locally_owned_dofs, mpi_communicator);
-    // Scenes without friction or damage keep their counters at 0.
-    std::map<std::string, double> physics_counters{{"max_friction_violation",
-                                                    0.},
-                                                   {"max_damage_violation", 0.},
-                                                   {"damage_rings_ahead", 0.}};
-    for (const Physics<dim> *object : physics)
-      object->write_checkpoint(sets_owned, physics_counters);
-    LA::MPI::Vector sets(locally_owned_dofs,
-                         locally_relevant_dofs,
-                         mpi_communicator);
-    sets = sets_owned;
-    const std::array<LA::MPI::Vector, 3> increments
-      = displacement_problem.increments_for_checkpoint();
+    CarriedState state;
+    collect_carried_state(state);
     const std::vector<const LA::MPI::Vector *> vectors
-      = {&displacement_problem.ghosted_solution(),
-         &increments[0],
-         &increments[1],
-         &increments[2],
-         &sets};
+      = state.vectors(displacement_problem.ghosted_solution());
     AssertDimension(vectors.size(), n_checkpoint_vectors);
     CheckpointFields::save(checkpointed_mesh(*mesh),
                            dof_handler,
@@ -165,7 +149,27 @@ namespace VPContact
                            displacement_problem.history(),
                            discretization.quadrature().size(),
                            folder + "/mesh");
-    return physics_counters;
+    return state.counters;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::collect_carried_state(CarriedState &state)
+  {
+    // Scenes without friction or damage keep their counters at 0.
+    state.counters = {{"max_friction_violation", 0.},
+                      {"max_damage_violation", 0.},
+                      {"damage_rings_ahead", 0.}};
+    LA::MPI::Vector sets_owned(locally_owned_dofs, mpi_communicator);
+    for (const Physics<dim> *object : physics)
+      object->write_checkpoint(sets_owned, state.counters);
+    state.sets.reinit(locally_owned_dofs,
+                      locally_relevant_dofs,
+                      mpi_communicator);
+    state.sets       = sets_owned;
+    state.increments = displacement_problem.increments_for_checkpoint();
   }
 
 

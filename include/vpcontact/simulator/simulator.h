@@ -46,8 +46,10 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace VPContact
 {
@@ -209,6 +211,31 @@ namespace VPContact
     print_summary(const double wall_time) const;
 
     // simulator_checkpoint.cc
+    /**
+     * The state step n + 1 starts from besides the solution and the stress
+     * history: the last three increments, the physics objects' sets
+     * (ghosted) and counters. A checkpoint writes it; an adaptation of the
+     * mesh carries it to the new mesh.
+     */
+    struct CarriedState
+    {
+      std::map<std::string, double>  counters;
+      LA::MPI::Vector                sets;
+      std::array<LA::MPI::Vector, 3> increments;
+      /// The vectors in the order of the files: @p solution (ghosted),
+      /// the increments, the sets.
+      std::vector<const LA::MPI::Vector *>
+      vectors(const LA::MPI::Vector &solution) const
+      {
+        return {&solution,
+                &increments[0],
+                &increments[1],
+                &increments[2],
+                &sets};
+      }
+    };
+    void
+    collect_carried_state(CarriedState &state);
     void
     load_checkpoint_mesh();
     unsigned int
