@@ -43,8 +43,9 @@ namespace VPContact
         "a factorization that gathers the matrix (Amesos KLU with Trilinos, "
         "MUMPS with PETSc), for small meshes. 'MUMPS': the distributed "
         "multifrontal factorization, for medium meshes under mpirun. "
-        "'Cholesky': the supernodal factorization of SuiteSparse CHOLMOD on "
-        "one process (CHOLMOD's own substitutions, run beside the damage "
+        "'Cholesky': the sparse Cholesky factorization of SuiteSparse "
+        "CHOLMOD on one process, by supernodes for large matrices "
+        "(CHOLMOD's own substitutions, run beside the damage "
         "step in a second thread), the fastest choice for a serial 2D run. A "
         "factorization is computed once per matrix and reused by every "
         "step, and again whenever the stick set changes.");

@@ -89,11 +89,23 @@ namespace VPContact
     // dissection only when AMD fills too much; on the paper scene it is
     // faster than METIS alone or nested dissection (scripts/bench).
     common.print = 0;
-    // Supernodes also on small matrices, where CHOLMOD would otherwise
-    // choose a simplicial L D L^T: L L^T stops at the first pivot that is not
-    // positive where L D L^T would go through an indefinite matrix without
+    // Supernodes pay off where the factor's columns are long: CHOLMOD
+    // chooses them when the flops per entry of L exceed the switch. Its
+    // default of 40 picks supernodes for every mesh of this program, and
+    // on the small matrices of adapting runs the simplicial factorization
+    // is twice as fast: 62 against 84-110 ms at 22,218 unknowns (111 Mflop,
+    // 106 flops per entry); at 33,282 (uniform 128^2, 167 flops per entry)
+    // both take 0.24 s, at 132,098 (315) supernodes take 1.1 s against
+    // 2.4 s (Intel Xeon; the factorizations of
+    // prm/convergence/paper_fig1_adaptive_run.prm at level 6 and of uniform
+    // meshes of the paper scene).
+    common.supernodal        = CHOLMOD_AUTO;
+    common.supernodal_switch = 120;
+    // L L^T also for the simplicial factors, where CHOLMOD would otherwise
+    // compute L D L^T: L L^T stops at the first pivot that is not positive
+    // where L D L^T would go through an indefinite matrix without
     // complaint.
-    common.supernodal = CHOLMOD_SUPERNODAL;
+    common.final_ll = true;
   }
 
 
@@ -160,6 +172,14 @@ namespace VPContact
                            + "; -2 means out of memory). Use Solver/Linear "
                              "solver = CG with AMG, which needs far less "
                              "memory."));
+  }
+
+
+
+  bool
+  SparseCholesky::is_supernodal() const
+  {
+    return factor != nullptr && factor->is_super;
   }
 
 

@@ -22,8 +22,10 @@ namespace VPContact
    * the stick set, and every step solves with it once.
    *
    * CHOLMOD orders the unknowns to reduce fill (AMD, and METIS or nested
-   * dissection only when AMD fills too much) and factorizes by supernodes,
-   * so most of its work is dense products in the BLAS. CHOLMOD is called
+   * dissection only when AMD fills too much) and factorizes large
+   * matrices by supernodes, so most of its work is dense products in the
+   * BLAS, and small ones column by column (simplicial), which is faster
+   * there. CHOLMOD is called
    * directly rather than through PETSc, whose interface copies the matrix
    * into a PETSc matrix (a second copy of K in memory) and allocates and
    * copies the vectors of every solve. Only the
@@ -45,6 +47,10 @@ namespace VPContact
      */
     void
     factorize(const LA::SparseMatrix &matrix);
+
+    /// Whether the last factorization went by supernodes.
+    bool
+    is_supernodal() const;
 
     /// dst = K^{-1} src.
     void
