@@ -113,6 +113,13 @@ namespace VPContact
     const Vector<float>                &indicators,
     const std::set<types::boundary_id> &uniform_boundary_ids) const
   {
+    // deal.II smooths the flags before the mesh changes. Of its smoothing
+    // only the level difference at vertices is kept here: eliminating
+    // unrefined islands looks at neighbours a rank may not see, and in 3D
+    // it gave meshes of 834 and 827 cells on 1 and 2 ranks from the same
+    // flags. p4est's 2:1 balance, which is global, still holds.
+    triangulation.set_mesh_smoothing(
+      Triangulation<dim>::limit_level_difference_at_vertices);
     flag_cells(triangulation,
                indicators,
                uniform_boundary_ids,
