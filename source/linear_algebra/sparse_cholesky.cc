@@ -91,14 +91,12 @@ namespace VPContact
     common.print = 0;
     // Supernodes pay off where the factor's columns are long: CHOLMOD
     // chooses them when the flops per entry of L exceed the switch. Its
-    // default of 40 picks supernodes for every mesh of this program, and
-    // on the small matrices of adapting runs the simplicial factorization
-    // is twice as fast: 62 against 84-110 ms at 22,218 unknowns (111 Mflop,
-    // 106 flops per entry); at 33,282 (uniform 128^2, 167 flops per entry)
-    // both take 0.24 s, at 132,098 (315) supernodes take 1.1 s against
-    // 2.4 s (Intel Xeon; the factorizations of
-    // prm/convergence/paper_fig1_adaptive_run.prm at level 6 and of uniform
-    // meshes of the paper scene).
+    // default of 40 picks supernodes for every mesh of this program; on the
+    // small matrices of adapting runs (about 100 flops per entry) the
+    // simplicial factorization is the faster one, the two are even near
+    // 170 (the uniform 128^2 paper mesh), and supernodes are far ahead from
+    // 300 on (256^2), measured with the factorizations of
+    // prm/convergence/paper_fig1_adaptive_run.prm and of uniform meshes.
     common.supernodal        = CHOLMOD_AUTO;
     common.supernodal_switch = 120;
     // L L^T also for the simplicial factors, where CHOLMOD would otherwise
