@@ -228,8 +228,9 @@ def program_run(a, size, algebra, solver, ranks, program, tag):
     floor = a.floor and "Output/Report solve floor" in has
     with open(prm, "w") as f:
         f.write(open(program.scene).read())
-        # The scene as in the file (fields every 10 steps); only the size,
-        # the step count over T = 1, the folder and the solver change.
+        # The scene as in the file (fields and error estimate every 10
+        # steps); only the size, the step count over T = 1, the folder and
+        # the solver change.
         f.write(f"\nsubsection Geometry\n  set Subdivisions = {size}, {size}\n"
                 f"end\nsubsection Time\n  set End time = 1\n"
                 f"  set Time step = {1 / a.steps!r}\nend\n"

@@ -464,8 +464,9 @@ def write_report(out, csv_path, rows):
         + f"; measured {m['date']}.",
         f"* Scene: `prm/paper_fig1.prm` (Tresca friction, gradient damage, "
         f"the paper's law) on N x N cells, {steps} steps over T = 1; "
-        "vpcontact writes the fields every 10 steps (column *output*), the "
-        "peer writes none.",
+        "vpcontact writes the fields (column *output*) and estimates its "
+        "error (column *error estimate*) every 10 steps, as the scene sets "
+        "them; the peer does neither.",
         "* vpcontact: `Solver/Linear algebra` = Trilinos or PETSc; the "
         "direct path is `Solver/Linear solver = Cholesky` (CHOLMOD, one "
         "process; run with the Trilinos package) or "

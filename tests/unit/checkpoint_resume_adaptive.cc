@@ -25,6 +25,9 @@ main(int argc, char **argv)
       set Refinement fraction  = 0.3
       set Coarsening fraction  = 0.1
       set Maximum level        = 2
+    end
+    subsection Error estimate
+      set Every steps = 1
     end)");
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {

@@ -36,6 +36,8 @@ namespace
               "Displacement and stress",
               "elastic equilibrium");
     set_entry(prm, "Output", "Output every", "0");
+    // The adaptive cycles refine by the indicators of every step.
+    set_entry(prm, "Error estimate", "Every steps", "1");
   }
 } // namespace
 
