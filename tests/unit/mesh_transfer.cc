@@ -92,49 +92,65 @@ namespace
           history.initialize(cell, quadrature.size());
     }
 
-    // Each point's values from @p f at its position.
+    // Calls visit(cell, values, q, v) at every point q of the owned cells,
+    // with values reinitialized on the cell (@p flags) and v the point's
+    // values; with @p store, what visit leaves in v is the point's new
+    // values.
+    template <typename Visit>
     void
-    set_history(const PointValue &f)
+    for_each_point(const UpdateFlags flags,
+                   const Visit      &visit,
+                   const bool        store = false)
     {
-      FEValues<2> values(fe, quadrature, update_quadrature_points);
+      FEValues<2> values(fe, quadrature, flags);
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             values.reinit(cell);
-            auto   points = history.get_data(cell);
-            auto   rates  = history.initial_rates(cell);
-            double v[n_values];
+            auto points = history.get_data(cell);
+            auto rates  = history.initial_rates(cell);
             for (unsigned int q = 0; q < points.size(); ++q)
               {
-                for (unsigned int i = 0; i < n_values; ++i)
-                  v[i] = f(i, values.quadrature_point(q));
-                points[q].read_from(v, rates[q]);
+                double v[n_values];
+                points[q].write_to(v, rates[q]);
+                visit(cell, values, q, v);
+                if (store)
+                  points[q].read_from(v, rates[q]);
               }
           }
     }
 
+    // Each point's values from @p f at its position.
+    void
+    set_history(const PointValue &f)
+    {
+      for_each_point(
+        update_quadrature_points,
+        [&](const auto &,
+            const FEValues<2> &values,
+            unsigned int       q,
+            double            *v) {
+          for (unsigned int i = 0; i < n_values; ++i)
+            v[i] = f(i, values.quadrature_point(q));
+        },
+        true);
+    }
+
     // The largest difference of a value at a point from @p f there.
     double
-    history_error(const PointValue &f) const
+    history_error(const PointValue &f)
     {
-      FEValues<2> values(fe, quadrature, update_quadrature_points);
-      double      error = 0;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            values.reinit(cell);
-            const auto points = history.get_data(cell);
-            const auto rates  = history.initial_rates(cell);
-            double     v[n_values];
-            for (unsigned int q = 0; q < points.size(); ++q)
-              {
-                points[q].write_to(v, rates[q]);
-                for (unsigned int i = 0; i < n_values; ++i)
-                  error = std::max(error,
-                                   std::abs(
-                                     v[i] - f(i, values.quadrature_point(q))));
-              }
-          }
+      double error = 0;
+      for_each_point(update_quadrature_points,
+                     [&](const auto &,
+                         const FEValues<2> &values,
+                         unsigned int       q,
+                         double            *v) {
+                       for (unsigned int i = 0; i < n_values; ++i)
+                         error = std::max(
+                           error,
+                           std::abs(v[i] - f(i, values.quadrature_point(q))));
+                     });
       return Utilities::MPI::max(error, MPI_COMM_WORLD);
     }
 
@@ -185,19 +201,15 @@ namespace
     // The values at the points of every active cell, by cell id, from all
     // ranks.
     std::map<std::string, std::vector<double>>
-    values_by_cell() const
+    values_by_cell()
     {
       std::map<std::string, std::vector<double>> own;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            const auto points = history.get_data(cell);
-            const auto rates  = history.initial_rates(cell);
-            auto      &v      = own[cell->id().to_string()];
-            v.resize(points.size() * n_values);
-            for (unsigned int q = 0; q < points.size(); ++q)
-              points[q].write_to(&v[q * n_values], rates[q]);
-          }
+      for_each_point(
+        update_default,
+        [&](const auto &cell, const FEValues<2> &, unsigned int, double *v) {
+          auto &values = own[cell->id().to_string()];
+          values.insert(values.end(), v, v + n_values);
+        });
       std::map<std::string, std::vector<double>> all;
       for (const auto &part : Utilities::MPI::all_gather(MPI_COMM_WORLD, own))
         all.insert(part.begin(), part.end());
@@ -222,24 +234,17 @@ namespace
     // The integral of every value over the mesh, which coarsening by
     // projection keeps (the children of a parent have equal measure here).
     std::vector<double>
-    integrals() const
+    integrals()
     {
-      FEValues<2>         values(fe, quadrature, update_JxW_values);
       std::vector<double> sums(n_values, 0.);
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            values.reinit(cell);
-            const auto points = history.get_data(cell);
-            const auto rates  = history.initial_rates(cell);
-            double     v[n_values];
-            for (unsigned int q = 0; q < points.size(); ++q)
-              {
-                points[q].write_to(v, rates[q]);
-                for (unsigned int i = 0; i < n_values; ++i)
-                  sums[i] += v[i] * values.JxW(q);
-              }
-          }
+      for_each_point(update_JxW_values,
+                     [&](const auto &,
+                         const FEValues<2> &values,
+                         unsigned int       q,
+                         double            *v) {
+                       for (unsigned int i = 0; i < n_values; ++i)
+                         sums[i] += v[i] * values.JxW(q);
+                     });
       for (auto &s : sums)
         s = Utilities::MPI::sum(s, MPI_COMM_WORLD);
       return sums;
