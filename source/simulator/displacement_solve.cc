@@ -29,7 +29,12 @@ namespace VPContact
                            + to_text(material.youngs_modulus())
                            + " overflows with the cell sizes of this mesh. "
                              "Rescale the units of the scene."));
-    displacement.solver.initialize(displacement.matrix, rigid_motions());
+    // The rigid motions are AMG's near null space; a factorization has no
+    // use for them, and they cost a pass over every node's support point.
+    displacement.solver.initialize(displacement.matrix,
+                                   displacement.solver.is_direct() ?
+                                     NearNullSpace() :
+                                     rigid_motions());
   }
 
 
