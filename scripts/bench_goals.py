@@ -133,14 +133,16 @@ def goals(best, sizes, algebras, every=None):
          "As on 1 rank."),
         ("peak memory of CG + AMG at most the peer's, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["mem_all_mb"], g1["mem_all_mb"]))),
-         "The peak comes while ML builds its hierarchy, whose products "
-         "R A P take the largest part of the heap then (valgrind's "
-         "massif). Besides, the fields at the quadrature points, the "
-         "points and entry positions kept per cell (the shape gradients "
-         "once per shape of cell) and the estimate's buffers stay "
-         "for the whole run; with PETSc a copy of the matrix in PETSc's "
-         "format comes on top. The peer holds one PETSc matrix and "
-         "GAMG's hierarchy."),
+         "The peak comes while ML builds its hierarchy: its product A P, "
+         "allocated at an estimated size and then copied, takes more heap "
+         "than the displacement matrix, and the hierarchy it keeps is "
+         "smaller (heaptrack). Besides, the mesh (one p4est tree per cell "
+         "of the scene's coarse mesh), the fields at the quadrature "
+         "points and the points and entry positions kept per cell stay "
+         "for the whole run (the estimate's buffers only while it "
+         "estimates, where it skips steps); with PETSc a copy of the "
+         "matrix in PETSc's format comes on top. The peer holds one PETSc "
+         "matrix and GAMG's hierarchy."),
         ("CG + AMG speed-up from 1 to 2 ranks at least 1.7",
          each(lambda a1, a2: fmt(ratio(a1["total_s"], a2["total_s"]))),
          "A run on 1 rank already uses both cores in its threaded parts "

@@ -72,9 +72,14 @@ namespace VPContact
     const Epetra_CrsMatrix          &K,
     const std::vector<unsigned int> &ghosted_of_column)
   {
+    // Reserved to the size, so that the copy holds no doubled capacity of
+    // push_back's growth for the rest of the run.
     row_start.assign(1, 0);
+    row_start.reserve(n_owned + 1);
     column.clear();
+    column.reserve(K.NumMyNonzeros());
     value.clear();
+    value.reserve(K.NumMyNonzeros());
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         int     n_entries = 0;

@@ -403,11 +403,20 @@ namespace VPContact
   {
     // The number of recovered components is fixed at compile time in the
     // passes, so that their loops over the components are unrolled.
+    //
+    // The buffers of the passes stay from one step to the next only where
+    // every step is estimated; a run that estimates every tenth step holds
+    // their memory (more than its stress history) only while it estimates,
+    // and pays for the allocation once per estimate.
+    allocate_step_buffers();
     if (with_damage)
       passes<true>(n, entries, law);
     else
       passes<false>(n, entries, law);
-    return sum_norms(k, youngs_modulus);
+    const ErrorEstimate estimate = sum_norms(k, youngs_modulus);
+    if (every_steps > 1)
+      release_step_buffers();
+    return estimate;
   }
 
 

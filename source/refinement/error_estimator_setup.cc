@@ -1,6 +1,6 @@
 // ErrorEstimator's work once per mesh: the recovery space and its
 // constraints, the lumped mass, the cells that share each node, and the
-// per-cell data and buffers that the passes of every step reuse.
+// per-cell data, and the buffers of the passes of a step.
 #include <vpcontact/refinement/error_estimator.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -209,17 +209,42 @@ namespace VPContact
   void
   ErrorEstimator<dim>::setup_cell_data()
   {
-    // (h_K / pi)^2, which depends on the mesh only, and the buffers of the
-    // passes of every step, allocated here once rather than in every step.
+    // (h_K / pi)^2, which depends on the mesh only. The buffers of the
+    // passes are sized by the mesh, so those of the last mesh go.
     damage_weights.resize(cells->size());
     for (std::size_t i = 0; i < cells->size(); ++i)
       {
         const double h_over_pi = (*cells)[i]->diameter() / numbers::PI;
         damage_weights[i]      = h_over_pi * h_over_pi;
       }
-    moments.assign(cells->size() * n_nodes * n_components, 0.);
-    point_values.assign(cells->size() * n_q * n_components, 0.);
-    norms.resize(cells->size());
+    release_step_buffers();
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::allocate_step_buffers()
+  {
+    // Left uninitialized: the first pass writes every entry before it is
+    // read, and its threads touch the pages of their own cells first.
+    if (!moments)
+      {
+        moments.reset(new double[cells->size() * n_nodes * n_components]);
+        point_values.reset(new double[cells->size() * n_q * n_components]);
+        norms.resize(cells->size());
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ErrorEstimator<dim>::release_step_buffers()
+  {
+    moments.reset();
+    point_values.reset();
+    std::vector<CellNorms>().swap(norms);
   }
 
 

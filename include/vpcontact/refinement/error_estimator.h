@@ -167,6 +167,10 @@ namespace VPContact
     setup_hanging_nodes();
     void
     setup_cell_data();
+    void
+    allocate_step_buffers();
+    void
+    release_step_buffers();
     template <bool damage>
     void
     evaluate_fields(const std::size_t        i,
@@ -248,14 +252,16 @@ namespace VPContact
     /// (h_K / pi)^2 of each owned cell.
     std::vector<double> damage_weights;
 
-    /// Per step, kept between the passes (allocated once per mesh): the
-    /// cells' moments int_K phi_a q_h (component c of node a of cell i at
-    /// (i * n_nodes + a) * n_components + c), the discrete fields at every
-    /// point in the same order of components ((i * n_q + q) * n_components
-    /// + c), and every cell's norms.
-    std::vector<double>    moments;
-    std::vector<double>    point_values;
-    std::vector<CellNorms> norms;
+    /// Per step, kept between the passes: the cells' moments int_K phi_a
+    /// q_h (component c of node a of cell i at (i * n_nodes + a) *
+    /// n_components + c), the discrete fields at every point in the same
+    /// order of components ((i * n_q + q) * n_components + c), and every
+    /// cell's norms. They take 2 * 32 doubles per cell of a 2D damage
+    /// scene, so they are held from one step to the next only when every
+    /// step is estimated (see allocate_step_buffers()).
+    std::unique_ptr<double[]> moments;
+    std::unique_ptr<double[]> point_values;
+    std::vector<CellNorms>    norms;
 
     ErrorEstimate largest_sum, largest_part;
     Vector<float> indicators;
