@@ -7,6 +7,7 @@
 #include <deal.II/lac/solver_cg.h>
 
 #include <algorithm>
+#include <cmath>
 #include <future>
 
 namespace VPContact
@@ -264,7 +265,9 @@ namespace VPContact
         x = 0.;
         return 0;
       }
-    SolverControl control(max_iterations, relative_tolerance * b_norm);
+    SolverControl control(
+      max_iterations,
+      (loose ? std::sqrt(relative_tolerance) : relative_tolerance) * b_norm);
     try
       {
         unsigned int stale_iterations = 0;
@@ -370,6 +373,14 @@ namespace VPContact
   LinearSolver::tolerance() const
   {
     return relative_tolerance;
+  }
+
+
+
+  void
+  LinearSolver::set_loose_tolerance(const bool loose_tolerance)
+  {
+    loose = loose_tolerance;
   }
 
 

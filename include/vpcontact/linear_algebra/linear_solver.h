@@ -140,6 +140,15 @@ namespace VPContact
     double
     tolerance() const;
 
+    /**
+     * Let CG stop at sqrt(Solver/Relative tolerance) instead of the
+     * tolerance (@p loose), until called again with false: the friction
+     * iteration solves this far while its sets still change. A
+     * factorization solves exactly either way.
+     */
+    void
+    set_loose_tolerance(const bool loose);
+
     unsigned int
     iteration_limit() const;
 
@@ -150,6 +159,7 @@ namespace VPContact
     bool                       automatic = false;
     std::string                reason;
     double                     relative_tolerance = 1e-10;
+    bool                       loose              = false;
     unsigned int               max_iterations     = 1000;
     std::unique_ptr<SpdSolver> solver;
     /// The matrix of initialize(), and whether it changed since.

@@ -320,6 +320,10 @@ namespace VPContact
     share_increment();
     bool
     friction_sets_settled(const double time, const unsigned int iteration);
+    /// Whether the solves of a friction iteration may stop at the square
+    /// root of the tolerance while the sets change.
+    bool
+    may_solve_loosely() const;
 
     /// Stop if the active set cycles or does not settle in the entries'
     /// number of iterations.
