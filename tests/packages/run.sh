@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The paper scene (24 x 24 cells, 20 steps; prm/SCENE.prm, default
-# paper_fig1, or paper_fig1_p1 on triangles with its monitor points) with
+# A 2D scene (24 x 24 cells, 20 steps; prm/SCENE.prm, default paper_fig1,
+# or paper_fig1_p1 on triangles with its monitor points, or paper_fig1_slip
+# whose sets change within the steps) with
 # each package and method, on 1 and 2 ranks: its statistics.csv must equal
 # that of the serial Trilinos run with CG and AMG to the solver tolerance. The columns compared are every
 # column but wall_time, linear_iterations and active_set_iterations (which
