@@ -35,12 +35,15 @@ namespace VPContact
     // The task owns the patches (or what builds them); the file is written
     // only once the whole piece is in memory. It holds them through a shared
     // pointer, so that no copy of the task copies them (a copy of the patches
-    // would double the memory of the output at its peak). It returns what went
-    // wrong, or an empty string.
+    // would double the memory of the output at its peak), and frees them
+    // itself: freed by the thread that waits for the write, they would cost
+    // that thread the time of returning every patch's memory. It returns
+    // what went wrong, or an empty string.
     auto task
       = [fields = std::make_shared<FieldPatches<dim>>(std::move(fields)),
          filename,
-         flags]() -> std::string {
+         flags]() mutable -> std::string {
+      std::string problem;
       try
         {
           if (fields->build)
@@ -62,13 +65,14 @@ namespace VPContact
         {
           std::ostringstream info;
           e.print_info(info);
-          return Utilities::trim(info.str());
+          problem = Utilities::trim(info.str());
         }
       catch (const std::exception &e)
         {
-          return e.what();
+          problem = e.what();
         }
-      return "";
+      fields.reset();
+      return problem;
     };
     started = true;
     if (in_background)

@@ -13,7 +13,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <list>
 #include <memory>
 #include <utility>
 
@@ -66,27 +65,23 @@ namespace VPContact
 
 
 
-    // What the fields of one output are built from: a DataOut with the
-    // vectors and postprocessors it refers to, all owned here, so that the
-    // patches can be built in the background while the simulator's vectors
-    // change (see Simulator::write_fields()).
+    // What the fields of one output are built from: a DataOut and the
+    // postprocessors it refers to, owned here, so that the patches can be
+    // built in the background while the simulator's vectors change (see
+    // Simulator::write_fields()). The vectors are not kept: DataOut copies
+    // each one it is given, with the ghost entries its cells read, as it
+    // is added (deal.II 9.4, DataOut_DoFData::add_data_vector()).
     template <int dim>
     struct FieldSources
     {
-      PatchDataOut<dim>    data_out;
-      LA::MPI::BlockVector solution;
-      /// The physics objects' nodal fields: a list, since DataOut keeps
-      /// the address of each vector.
-      std::list<LA::MPI::BlockVector>                            nodal;
+      PatchDataOut<dim>                                          data_out;
       std::vector<std::shared_ptr<const DataPostprocessor<dim>>> readers;
-      Vector<double>              von_mises, subdomain;
-      std::vector<Vector<double>> components;
     };
 
 
 
-    // Copies of the cell fields into @p sources, added to its DataOut: the
-    // cell averages of the stress (its von Mises norm and its @p components)
+    // The cell fields, added to the DataOut of @p sources: the cell
+    // averages of the stress (its von Mises norm and its @p components)
     // and the rank @p owner that owns the cells.
     template <int dim>
     void
@@ -95,66 +90,35 @@ namespace VPContact
                     const std::vector<Vector<double>> &components,
                     const types::subdomain_id          owner)
     {
-      sources.von_mises  = von_mises;
-      sources.components = components;
-      sources.data_out.add_data_vector(sources.von_mises, "von_mises");
+      sources.data_out.add_data_vector(von_mises, "von_mises");
       const auto names_of_stress = stress_component_names<dim>();
       for (unsigned int c = 0; c < components.size(); ++c)
-        sources.data_out.add_data_vector(sources.components[c],
-                                         names_of_stress[c]);
-      sources.subdomain.reinit(von_mises.size());
-      sources.subdomain = owner;
-      sources.data_out.add_data_vector(sources.subdomain, "subdomain");
+        sources.data_out.add_data_vector(components[c], names_of_stress[c]);
+      Vector<double> subdomain(von_mises.size());
+      subdomain = owner;
+      sources.data_out.add_data_vector(subdomain, "subdomain");
     }
 
 
 
-    // A ghosted copy of @p owned, in the blocks of the numbering
-    // (displacement, damage) as the solution has them, each with
-    // contiguous owned indices: what DataOut needs to build its own ghosted
-    // vector from it on several ranks.
-    LA::MPI::BlockVector
-    ghosted_blocks(const LA::MPI::BlockVector &owned,
-                   const IndexSet             &relevant_dofs,
-                   const MPI_Comm              communicator)
-    {
-      std::vector<IndexSet>   owned_blocks, relevant_blocks;
-      types::global_dof_index start = 0;
-      for (unsigned int b = 0; b < owned.n_blocks(); ++b)
-        {
-          const auto end = start + owned.block(b).size();
-          owned_blocks.push_back(owned.block(b).locally_owned_elements());
-          relevant_blocks.push_back(relevant_dofs.get_view(start, end));
-          start = end;
-        }
-      LA::MPI::BlockVector ghosted(owned_blocks, relevant_blocks, communicator);
-      ghosted = owned;
-      return ghosted;
-    }
-
-
-
-    // The nodal fields of a physics object into @p sources, in the blocks
-    // of @p layout (the solution's).
+    // The nodal fields of a physics object, added to the DataOut of
+    // @p sources in the blocks of @p layout (the solution's): DataOut takes
+    // a vector whose owned entries are not one range on each rank only in
+    // blocks that each have one.
     template <int dim>
     void
     add_nodal_fields(std::vector<NodalField<dim>> &&fields,
                      const LA::MPI::BlockVector    &layout,
-                     const IndexSet                &relevant_dofs,
                      FieldSources<dim>             &sources)
     {
       if (fields.empty())
         return;
-      const MPI_Comm communicator = layout.block(0).get_mpi_communicator();
       LA::MPI::BlockVector blocks(layout);
       for (NodalField<dim> &field : fields)
         {
           copy_into_blocks(field.values, blocks);
-          sources.nodal.push_back(
-            ghosted_blocks(blocks, relevant_dofs, communicator));
           sources.readers.push_back(std::move(field.postprocessor));
-          sources.data_out.add_data_vector(sources.nodal.back(),
-                                           *sources.readers.back());
+          sources.data_out.add_data_vector(blocks, *sources.readers.back());
         }
     }
 
@@ -384,8 +348,8 @@ namespace VPContact
                                const std::vector<Vector<double>> &components)
   {
     // The solution: displacement (a vector) and, in damage scenes, zeta;
-    // the stresses per cell, and their ranks. Copies go to the DataOut
-    // here, where the ranks exchange ghost values together; its patches
+    // the stresses per cell, and their ranks. DataOut copies them here,
+    // where the ranks exchange ghost values together; its patches
     // (FEValues on every cell, the larger cost) are built with the write,
     // in the background: the mesh does not change before it is waited for.
     const auto               sources  = std::make_shared<FieldSources<dim>>();
@@ -402,10 +366,7 @@ namespace VPContact
             DataComponentInterpretation::component_is_scalar);
         }
     data_out.attach_dof_handler(dof_handler);
-    sources->solution = ghosted_blocks(displacement_problem.solution_blocks(),
-                                       locally_relevant_dofs,
-                                       mpi_communicator);
-    data_out.add_data_vector(sources->solution,
+    data_out.add_data_vector(displacement_problem.solution_blocks(),
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
@@ -415,7 +376,6 @@ namespace VPContact
     for (const Physics<dim> *object : physics)
       add_nodal_fields(object->output_fields(locally_owned_dofs),
                        displacement_problem.solution_blocks(),
-                       locally_relevant_dofs,
                        *sources);
 
     add_cell_fields(*sources,
