@@ -120,9 +120,14 @@ def goals(best, sizes, algebras, every=None):
          "path builds ML once per run with the rigid motions as its "
          "near-null space, where 211b1ab gave it the constant mode of "
          "each component: the setup costs more and the displacement "
-         "solve, the step's largest phase, much less. The output's loss "
-         "on the MUMPS and AMG paths is not yet traced. Every phase and "
-         "its decision is in [design.md](design.md)."),
+         "solve, the step's largest phase, much less. The output: "
+         "211b1ab built its patches from the nodal values itself; HEAD "
+         "gives the fields to deal.II's DataOut, which at every written "
+         "step copies each field vector with its ghost entries (a "
+         "partitioner and a ghost exchange per vector) before the "
+         "patches are built in the background, and on 2 ranks, one core "
+         "each, that copy is not hidden. Every phase and its decision is "
+         "in [design.md](design.md)."),
         ("CG + AMG at most 0.5 of the peer's CG + GAMG, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["total_s"], g1["total_s"]))),
          "The AMG cycles on the displacement block (ML or GAMG) are the "
