@@ -1,9 +1,11 @@
-// Memory bandwidth of this machine, for scripts/bench: the STREAM triad
-// a = b + s c on three arrays far larger than the caches, best of 20 sweeps.
-// scripts/bench.py runs one copy alone and then one copy per core at the
-// same time: the sum of their rates against the rate of one copy alone is
-// how far a bandwidth-bound phase (sparse matrix-vector products, AMG
-// V-cycles) can speed up on more ranks of the same machine.
+// Memory bandwidth of this machine: the STREAM triad a = b + s c on three
+// arrays far larger than the caches, best of 20 sweeps, in GB/s. Run one
+// copy alone and then one copy per core at the same time
+//   g++ -O3 -march=native -o /tmp/bandwidth scripts/bandwidth.cc
+//   /tmp/bandwidth; for i in 1 2; do /tmp/bandwidth & done; wait
+// the sum of their rates against the rate of one copy alone is how far a
+// bandwidth-bound phase (sparse matrix-vector products, AMG V-cycles) can
+// speed up on more ranks of the same machine.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

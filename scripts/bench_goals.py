@@ -152,7 +152,9 @@ def goals(best, sizes, algebras, every=None):
          each(lambda a1, a2: fmt(ratio(a1["total_s"], a2["total_s"]))),
          "A run on 1 rank already uses both cores in its threaded parts "
          "(assembly, stress update, output), so 2 ranks gain only in the "
-         "solves; the AMG cycles of both ranks share one memory bus."),
+         "solves: the displacement solve's AMG cycles gain (the column "
+         "*displacement solve* of the table above), the damage solves "
+         "lose (the next row)."),
         ("damage solves speed-up from 1 to 2 ranks at least 1.6",
          each(lambda a1, a2: fmt(ratio(damage(a1), damage(a2)))),
          "The damage solves work on the free nodes only, which lie around "
