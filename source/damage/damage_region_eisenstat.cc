@@ -70,7 +70,8 @@ namespace VPContact
     // product needs K_off apart. Only the rows along the cut between the
     // ranks have such entries, and only the owned entries that the import
     // sends to other ranks need t: both are listed here, so that an
-    // iteration touches the cut and not the whole region.
+    // iteration touches the cut and not the whole region. The ghost
+    // columns are kept as positions among the halo's ghost entries.
     coupled_rows.clear();
     ghost_start.assign(1, 0);
     ghost_column.clear();
@@ -84,7 +85,7 @@ namespace VPContact
             for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
               if (owned_of_ghosted[column[e]] < 0)
                 {
-                  ghost_column.push_back(column[e]);
+                  ghost_column.push_back(ghost_of_ghosted[column[e]]);
                   ghost_value.push_back(value[e]);
                 }
             if (ghost_column.size() > ghost_start.back())
@@ -93,9 +94,9 @@ namespace VPContact
                 ghost_start.push_back(ghost_column.size());
               }
           }
-        const int *const export_lids = importer->ExportLIDs();
-        for (int e = 0; e < importer->NumExportIDs(); ++e)
-          exported.emplace_back(export_lids[e], region_index[export_lids[e]]);
+        for (const auto &[begin, end] : halo->import_indices())
+          for (unsigned int i = begin; i < end; ++i)
+            exported.emplace_back(i, region_index[i]);
       }
   }
 
@@ -196,15 +197,19 @@ namespace VPContact
     // vanishes off F, and so off R), their ghosts from the other ranks,
     // then K_off t on the rows along the cut (off_rank stays zero on the
     // others).
-    double *const owned = direction.begin();
+    double *const owned = halo_owned.data();
     for (const auto &[position, k] : exported)
       owned[position] = (k >= 0 ? t[k] : 0.);
-    const int error
-      = direction_ghosted.trilinos_vector().Import(direction.trilinos_vector(),
-                                                   *importer,
-                                                   Insert);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    const double *const ghosted = direction_ghosted.begin();
+    halo->export_to_ghosted_array_start<double>(
+      0,
+      make_array_view<const double>(halo_owned.data(),
+                                    halo_owned.data() + n_owned),
+      make_array_view(halo_send),
+      make_array_view(ghost_values),
+      halo_requests);
+    halo->export_to_ghosted_array_finish<double>(make_array_view(ghost_values),
+                                                 halo_requests);
+    const double *const ghosted = ghost_values.data();
     for (unsigned int c = 0; c < coupled_rows.size(); ++c)
       {
         const unsigned int k = coupled_rows[c];
@@ -355,8 +360,5 @@ namespace VPContact
       }
     for (unsigned int k = 0; k < n; ++k)
       x[region[k]] += t[k];
-    double *p = direction.begin();
-    for (const auto &entry : exported)
-      p[entry.first] = 0.;
   }
 } // namespace VPContact

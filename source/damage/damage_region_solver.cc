@@ -25,14 +25,19 @@ namespace VPContact
     n_owned       = owned.n_elements();
     // The ghosted layout the products read: the owned entries and every
     // column of the owned rows.
-    const Epetra_CrsMatrix &K = matrix.trilinos_matrix();
+    const Epetra_CrsMatrix &K       = matrix.trilinos_matrix();
+    const IndexSet          columns = columns_of_owned_rows(matrix, owned);
     direction.reinit(owned, communicator);
-    direction_ghosted.reinit(owned,
-                             columns_of_owned_rows(matrix, owned),
-                             communicator);
+    direction_ghosted.reinit(owned, columns, communicator);
     importer = std::make_unique<Epetra_Import>(
       direction_ghosted.trilinos_vector().Map(),
       direction.trilinos_vector().Map());
+    halo = std::make_shared<Utilities::MPI::Partitioner>(owned,
+                                                         columns,
+                                                         communicator);
+    halo_owned.assign(n_owned, 0.);
+    halo_send.assign(halo->n_import_indices(), 0.);
+    ghost_values.assign(halo->n_ghost_indices(), 0.);
 
     // The local storage of an owned vector lists the owned indices in
     // ascending order, as the row map of the matrix does, so a row's local
@@ -43,12 +48,15 @@ namespace VPContact
     const std::vector<unsigned int> ghosted_of_column
       = ghosted_positions_of_columns(matrix, ghosted_map);
     owned_of_ghosted.assign(ghosted_map.NumMyElements(), -1);
+    ghost_of_ghosted.assign(ghosted_map.NumMyElements(), 0);
     for (unsigned int g = 0; g < owned_of_ghosted.size(); ++g)
       {
         const types::global_dof_index index
           = TrilinosWrappers::global_index(ghosted_map, g);
         if (owned.is_element(index))
           owned_of_ghosted[g] = owned.index_within_set(index);
+        else
+          ghost_of_ghosted[g] = halo->global_to_local(index) - n_owned;
       }
 
     AssertThrow(static_cast<unsigned int>(K.NumMyRows()) == n_owned,

@@ -8,6 +8,7 @@
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/partitioner.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -241,8 +242,11 @@ namespace VPContact
     std::vector<double>       value;
     /// Owned position of each ghosted position (or -1 for a ghost).
     std::vector<int> owned_of_ghosted;
-    unsigned int     n_owned = 0;
-    Preconditioner   kind    = Preconditioner::modified_incomplete_cholesky;
+    /// Position among the halo's ghost entries of each ghosted position
+    /// that is a ghost (unused for the owned ones).
+    std::vector<unsigned int> ghost_of_ghosted;
+    unsigned int              n_owned = 0;
+    Preconditioner kind = Preconditioner::modified_incomplete_cholesky;
 
     // The free set of the current solve.
     std::vector<bool>         is_free;
@@ -278,9 +282,10 @@ namespace VPContact
     std::vector<double>       masked_shift;
     std::vector<unsigned int> coupled_rows;
     std::vector<unsigned int> ghost_start;
+    /// Positions in ghost_values (the halo's ghost entries).
     std::vector<unsigned int> ghost_column;
     std::vector<double>       ghost_value;
-    /// The owned positions the import sends to other ranks, with their
+    /// The owned positions the halo sends to other ranks, with their
     /// region index (or -1).
     std::vector<std::pair<unsigned int, int>> exported;
     std::vector<double>                       off_rank;
@@ -304,6 +309,17 @@ namespace VPContact
     /// the two builds a new Epetra_Import every time (measured on 2 ranks
     /// at 512^2 cells: the damage solves took longer than on one).
     std::unique_ptr<Epetra_Import> importer;
+
+    /// The exchange of the sweeps' vector t along the cut: deal.II's
+    /// partitioner packs only the entries other ranks read (an
+    /// Epetra_Import also copies every owned entry into the ghosted
+    /// vector, a pass over the whole rank per iteration however small the
+    /// free set).
+    std::shared_ptr<const Utilities::MPI::Partitioner> halo;
+    std::vector<double>                                halo_owned;
+    std::vector<double>                                halo_send;
+    std::vector<double>                                ghost_values;
+    std::vector<MPI_Request>                           halo_requests;
   };
 } // namespace VPContact
 
