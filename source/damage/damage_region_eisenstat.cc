@@ -68,7 +68,7 @@ namespace VPContact
     // built from this rank's rows alone (block Jacobi between ranks, as
     // for (M)IC(0)), so K = C + C^T + (K_kk - 2 D) + K_off, and the
     // product needs K_off apart. Only the rows along the cut between the
-    // ranks have such entries, and only the owned entries that the import
+    // ranks have such entries, and only the owned entries that the halo
     // sends to other ranks need t: both are listed here, so that an
     // iteration touches the cut and not the whole region. The ghost
     // columns are kept as positions among the halo's ghost entries.
