@@ -61,6 +61,11 @@ def arguments():
                    "and run each configuration with it right after HEAD's, "
                    "or only those whose name matches REGEX (as --configs); "
                    "the report compares their phases (repeatable)")
+    p.add_argument("--small-pages", nargs="?", const=".", metavar="REGEX",
+                   help="also run HEAD's build with VPCONTACT_HUGE_PAGES=0 "
+                   "(the heap in the system's 4 KiB pages) right after each "
+                   "configuration, or each whose name matches REGEX; the "
+                   "report compares it like an --against commit")
     p.add_argument("--configs", metavar="REGEX", help="only the runs whose "
                    "name matches (re.search), as in 'vpcontact Trilinos "
                    "Cholesky, 1 rank' or 'peer gamg, 2 ranks': "
@@ -175,13 +180,16 @@ def timer_table(out):
     return total, phases
 
 
-def launch(a, command, ranks, tag, finished, timeout=None):
+def launch(a, command, ranks, tag, finished, timeout=None, environment=()):
     """Runs a command under /usr/bin/time -v (for the peak memory of each
     process), under mpirun for several ranks, and keeps its output in the
     log folder; (stdout, the row's status, wall time, peak memory summed
     over the ranks, log). With @p timeout (seconds) the run gets SIGTERM
-    then, which vpcontact answers by stopping after its step."""
+    then, which vpcontact answers by stopping after its step. The
+    @p environment entries (NAME=VALUE) are set for the command alone."""
     executable = command[0]
+    if environment:
+        command = ["env"] + list(environment) + command
     rss = os.path.join(a.workdir, "logs", tag + ".rss")
     for f in glob.glob(rss + ".*"):
         os.remove(f)
@@ -238,7 +246,8 @@ def program_run(a, size, algebra, solver, ranks, program, tag):
                 + ("  set Report solve floor = true\n" if floor else "")
                 + f"end\nsubsection Solver\n{solver_section}end\n")
     out, row = launch(a, [program.executable, prm], ranks, tag,
-                           lambda out: "Total wallclock" in out)
+                      lambda out: "Total wallclock" in out,
+                      environment=getattr(program, "environment", ()))
     if row["status"] != "ok":
         return row
     total, phases = timer_table(out)
@@ -324,8 +333,16 @@ def machine():
     if version(["git", "-C", ROOT, "status", "--porcelain", "--",
                 "source", "include", "CMakeLists.txt"]):
         commit += " with local changes"
+    # The kernel's transparent huge page mode, the word in brackets:
+    # vpcontact asks for huge pages where it is "madvise" (huge_pages.h).
+    try:
+        thp = re.search(r"\[(\w+)\]", open(
+            "/sys/kernel/mm/transparent_hugepage/enabled").read()).group(1)
+    except (OSError, AttributeError):
+        thp = ""
     return dict(
         date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), cpu=cpu,
+        thp=thp,
         cores=os.cpu_count(), memory_gb=round(memory / 2**20, 1), os=osname,
         dealii=version(package + ["libdeal.ii-dev"]),
         petsc=version(package + ["libpetsc-real-dev"]),
@@ -400,6 +417,20 @@ def plan(a, programs):
     return chosen
 
 
+def small_pages(a, head):
+    """With --small-pages: HEAD's build once more, its heap in 4 KiB pages
+    (VPCONTACT_HUGE_PAGES=0, huge_pages.h), labelled as a commit of its
+    own so that the report sets its phases beside HEAD's."""
+    if not a.small_pages:
+        return []
+    program = bench_against.Program(head.commit + " 4 KiB pages",
+                                    head.executable, ROOT)
+    program.has = head.has
+    program.configs = a.small_pages
+    program.environment = ("VPCONTACT_HUGE_PAGES=0",)
+    return [program]
+
+
 def earlier_programs(a, worktrees, head_commit):
     """A build of each --against commit with the entries it offers."""
     programs = []
@@ -463,7 +494,8 @@ def main():
         sys.exit(f"{a.executable} --print-parameters printed no entries")
     plan(a, [head])  # a --configs that selects nothing stops before a build
     with bench_against.Worktrees(a.workdir) as worktrees:
-        runs = plan(a, [head] + earlier_programs(a, worktrees, head.commit))
+        runs = plan(a, [head] + small_pages(a, head)
+                    + earlier_programs(a, worktrees, head.commit))
         for program, code, algebra, solver, _, ranks, skip in runs:
             if skip:
                 label = (f"{code} {program.commit}" if code == "vpcontact"

@@ -4,7 +4,7 @@ missed: the table of doc/performance.md that bench_report.py writes."""
 import math
 
 from bench_report import (PHASE_TITLES, config, damage, fmt, percent, ratio,
-                          short)
+                          short, small_pages)
 
 
 def goals(best, sizes, algebras, every=None):
@@ -71,7 +71,8 @@ def goals(best, sizes, algebras, every=None):
     # same peer run: how far the earlier kernels alone go.
     earlier = [r for (s, k), r in (every or {}).items()
                if s == size and k[0] == "vpcontact" and k[3] == 1
-               and r["commit"] != fastest["commit"]]
+               and r["commit"] != fastest["commit"]
+               and not small_pages(r)]
     then = ""
     if earlier:
         e = min(earlier, key=lambda r: r["total_s"])
@@ -87,7 +88,8 @@ def goals(best, sizes, algebras, every=None):
         if s != size or k[0] != "vpcontact" or r["commit"] != fastest["commit"]:
             continue
         for (s2, k2), e in every.items():
-            if s2 != size or k2[:4] != k[:4] or e["commit"] == r["commit"]:
+            if (s2 != size or k2[:4] != k[:4] or e["commit"] == r["commit"]
+                    or small_pages(e)):
                 continue
             for phase, title in PHASE_TITLES:
                 now, then_ms = r.get(phase + "_ms"), e.get(phase + "_ms")

@@ -26,13 +26,28 @@ PHASE_TITLES = [("assembly", "assembly"),
 # head: the tree the benchmark ran from, the same in every row; scene: a
 # hash of the scene file that commit's binary read.
 MACHINE = ["date", "cpu", "cores", "memory_gb", "os", "dealii", "petsc",
-           "dolfinx", "commit", "head", "scene"]
+           "dolfinx", "commit", "head", "scene", "thp"]
 COLUMNS = (["round", "size", "steps", "code", "algebra", "solver", "path",
             "ranks", "status", "dofs", "total_s", "setup_s", "per_step_ms"]
            + [p + "_ms" for p in PHASES]
            + ["damage_solve_min_ms", "damage_solve_max_ms", "mem_rank0_mb",
               "mem_all_mb", "process_wall_s", "linear_its", "active_set_its",
               "floor_ms", "phases", "log"] + MACHINE)
+
+
+def huge_page_line(m):
+    """What the kernel's transparent huge page mode means for the runs."""
+    thp = m.get("thp", "")
+    if not thp:
+        return []
+    if thp != "madvise":
+        return [f"* Transparent huge pages: `{thp}` (vpcontact asks for none "
+                "in this mode)."]
+    return ["* Transparent huge pages: `madvise` (only memory that asks gets "
+            "them). vpcontact asks for its heap (it restarts itself with "
+            "`GLIBC_TUNABLES=glibc.malloc.hugetlb=1`, "
+            "`include/vpcontact/app/huge_pages.h`); the peer and commits "
+            "before that run with 4 KiB pages, as the system gives them."]
 
 
 def write_csv(path, rows):
@@ -77,6 +92,12 @@ def head(r):
 
 def is_head(r):
     return r["commit"] == head(r)
+
+
+def small_pages(r):
+    """Whether the row is HEAD's build run with 4 KiB pages (bench.py
+    --small-pages): a setting of HEAD, not an earlier commit."""
+    return r["commit"].endswith(" 4 KiB pages")
 
 
 def short(r):
@@ -479,6 +500,7 @@ def write_report(out, csv_path, rows):
         "* Peer: `peer.py --solver lu` (MUMPS LU, factorized once) and "
         "`--solver gamg` (CG + PETSc GAMG), after a warm-up run that "
         "compiles its forms.",
+    ] + huge_page_line(m) + [
         "* *total*: the run's own clock from start to end (vpcontact's "
         "timer table, the peer's `t_total`). *per step*: (total − mesh and "
         "dof set-up) / steps, split by phase in ms per step (rank 0's "
@@ -553,7 +575,9 @@ def write_report(out, csv_path, rows):
         "work folder, runs each configuration it offers, or those whose "
         "name matches REGEX, right after HEAD's and fills the section "
         "*Phases against earlier commits*; the worktree is removed at the "
-        "end). `scripts/bench_report.py CSV PAGE` "
+        "end), `--small-pages [REGEX]` (HEAD's build again with "
+        "`VPCONTACT_HUGE_PAGES=0`, its heap in 4 KiB pages, compared in the "
+        "same section). `scripts/bench_report.py CSV PAGE` "
         "rewrites the page from the CSV alone. Run it with nothing else "
         "busy on the machine."]
     with open(out, "w") as f:
