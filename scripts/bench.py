@@ -247,7 +247,7 @@ def program_run(a, size, algebra, solver, ranks, program, tag):
                 + f"end\nsubsection Solver\n{solver_section}end\n")
     out, row = launch(a, [program.executable, prm], ranks, tag,
                       lambda out: "Total wallclock" in out,
-                      environment=getattr(program, "environment", ()))
+                      environment=program.environment)
     if row["status"] != "ok":
         return row
     total, phases = timer_table(out)

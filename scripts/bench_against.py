@@ -20,8 +20,9 @@ class Program:
     """One vpcontact binary of the benchmark: the commit it was built from
     (its label in the report and the CSV), the executable, the paper scene
     file of its tree (a binary reads the scene as its own commit writes it:
-    an earlier one refuses entries it does not know), and the entries it
-    offers (`--print-parameters`, filled in by bench.py)."""
+    an earlier one refuses entries it does not know), the entries it offers
+    (`--print-parameters`, filled in by bench.py) and the environment
+    entries its runs get (bench.py --small-pages)."""
 
     def __init__(self, commit, executable, root):
         self.commit = commit
@@ -30,6 +31,9 @@ class Program:
         with open(self.scene, "rb") as f:
             self.scene_hash = hashlib.sha1(f.read()).hexdigest()[:7]
         self.has = {}
+        # NAME=VALUE entries set for this binary's runs alone (bench.py
+        # --small-pages); none for a commit's own build.
+        self.environment = ()
 
 
 def git(*args, check=True):
