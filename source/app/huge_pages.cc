@@ -16,7 +16,6 @@
 // VPCONTACT_HUGE_PAGES=0 turns it off.
 #include <vpcontact/app/huge_pages.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
