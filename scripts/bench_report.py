@@ -481,7 +481,10 @@ def write_report(out, csv_path, rows):
         f"* {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB, {m['os']}; "
         f"deal.II {m['dealii']}, PETSc {m['petsc'] or '–'}, DOLFINx "
         f"{m['dolfinx'] or '–'}; vpcontact at commit {head(m)}"
-        + "".join(f" and at {c}" for c in earlier)
+        + (" (also with its heap in 4 KiB pages)"
+           if any(small_pages(r) for r in rows) else "")
+        + "".join(f" and at {c}" for c in earlier
+                  if not c.endswith(" 4 KiB pages"))
         + f"; measured {m['date']}.",
         f"* Scene: `prm/paper_fig1.prm` (Tresca friction, gradient damage, "
         f"the paper's law) on N x N cells, {steps} steps over T = 1; "
