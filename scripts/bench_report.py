@@ -483,8 +483,9 @@ def write_report(out, csv_path, rows):
         f"{m['dolfinx'] or '–'}; vpcontact at commit {head(m)}"
         + (" (also with its heap in 4 KiB pages)"
            if any(small_pages(r) for r in rows) else "")
-        + "".join(f" and at {c}" for c in earlier
-                  if not c.endswith(" 4 KiB pages"))
+        + "".join(f" and at {c}" for c in sorted(
+            {r["commit"] for r in rows
+             if not is_head(r) and not small_pages(r)}))
         + f"; measured {m['date']}.",
         f"* Scene: `prm/paper_fig1.prm` (Tresca friction, gradient damage, "
         f"the paper's law) on N x N cells, {steps} steps over T = 1; "
