@@ -155,8 +155,6 @@ namespace VPContact
     // Leave no half-made factor behind for solve() to use.
     if (!definite || status != CHOLMOD_OK)
       release();
-    else if (factor->is_super)
-      substitution.initialize(*factor);
     AssertThrow(definite,
                 ExcMessage(
                   "The Cholesky factorization of the displacement matrix "
@@ -192,15 +190,10 @@ namespace VPContact
     Assert(static_cast<long>(src.locally_owned_size()) == n
              && static_cast<long>(dst.locally_owned_size()) == n,
            ExcMessage("The vectors must live on one process, as the factors"));
-    // On one process the local storage of a vector is in the global order.
-    if (factor->is_super)
-      {
-        substitution.solve(src.begin(), dst.begin());
-        return;
-      }
     // cholmod_solve2() keeps its result and workspace between calls, so a
     // solve allocates nothing after the first; the right-hand side is
-    // src's own storage.
+    // src's own storage (on one process the local storage of a vector is
+    // in the global order).
     cholmod_dense rhs;
     rhs.nrow     = n;
     rhs.ncol     = 1;

@@ -5,7 +5,6 @@
 #define vpcontact_sparse_cholesky_h
 
 #include <vpcontact/linear_algebra/linear_algebra.h>
-#include <vpcontact/linear_algebra/supernodal_substitution.h>
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -53,10 +52,7 @@ namespace VPContact
     bool
     is_supernodal() const;
 
-    /**
-     * dst = K^{-1} src: with supernodal factors by SupernodalSubstitution,
-     * otherwise by cholmod_solve2().
-     */
+    /// dst = K^{-1} src.
     void
     solve(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const;
 
@@ -71,8 +67,6 @@ namespace VPContact
     mutable cholmod_dense *solution    = nullptr;
     mutable cholmod_dense *workspace_y = nullptr;
     mutable cholmod_dense *workspace_e = nullptr;
-    /// The substitutions with supernodal factors.
-    SupernodalSubstitution substitution;
   };
 } // namespace VPContact
 
