@@ -76,34 +76,63 @@ namespace VPContact
   RigidMotionCheck<dim>::RigidMotionCheck(const DoFHandler<dim> &dof_handler)
     : dof_handler(dof_handler)
     , mesh_parts(dof_handler)
+  {}
+
+
+
+  template <int dim>
+  typename RigidMotionCheck<dim>::Nodes
+  RigidMotionCheck<dim>::constrained_nodes(
+    const AffineConstraints<double> &constraints) const
   {
+    // The test reads only the owned constrained lines and the degrees of
+    // freedom they refer to: boundary and hanging nodes, a small share of
+    // the mesh. Only their support points are mapped, in one pass over the
+    // cells this rank sees, so that a fine mesh pays for its boundary here
+    // and not for all its nodes.
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    IndexSet        needed(dof_handler.n_dofs());
+    for (const auto &line : constraints.get_lines())
+      if (owned.is_element(line.index))
+        {
+          needed.add_index(line.index);
+          for (const auto &entry : line.entries)
+            needed.add_index(entry.first);
+        }
+    needed.compress();
+
     // Positions from the centre of the node's part, scaled by the part's
     // size, so that translations and rotations weigh alike.
+    Nodes                     nodes;
     const FiniteElement<dim> &fe = dof_handler.get_fe();
     const Mapping<dim>       &mapping
       = get_default_linear_mapping(dof_handler.get_triangulation());
     const std::vector<Point<dim>>       &unit = fe.get_unit_support_points();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        {
-          cell->get_dof_indices(dofs);
-          const auto [lower, upper]
-            = mesh_parts.bounding_box(mesh_parts.part_of(dofs[0]));
-          const Point<dim> centre = 0.5 * (lower + upper);
-          const double     size   = std::max(upper.distance(lower), 1e-300);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            {
-              const unsigned int c = fe.system_to_component_index(i).first;
-              if (c < dim)
+    if (needed.n_elements() > 0)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                if (c >= dim || !needed.is_element(dofs[i])
+                    || nodes.count(dofs[i]) > 0)
+                  continue;
+                const auto [lower, upper]
+                  = mesh_parts.bounding_box(mesh_parts.part_of(dofs[0]));
+                const Point<dim> centre = 0.5 * (lower + upper);
+                const double     size = std::max(upper.distance(lower), 1e-300);
                 nodes[dofs[i]]
                   = {c,
                      Point<dim>(
                        (mapping.transform_unit_to_real_cell(cell, unit[i])
                         - centre)
                        / size)};
-            }
-        }
+              }
+          }
+    return nodes;
   }
 
 
@@ -123,6 +152,7 @@ namespace VPContact
     const auto motion = [&](const unsigned int k, const auto &node) {
       return rigid_motion<dim>(k, node.second, node.first);
     };
+    const Nodes         nodes = constrained_nodes(constraints);
     std::vector<double> gram(mesh_parts.n_parts() * n_motions * n_motions, 0.);
     for (const auto &[dof, node] : nodes)
       if (owned.is_element(dof) && constraints.is_constrained(dof))

@@ -56,16 +56,22 @@ namespace VPContact
     parts() const;
 
   private:
+    /// Component and position of a displacement dof, relative to the
+    /// centre of its part and scaled by the part's size, by dof.
+    using Nodes
+      = std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>>;
+
+    /// The nodes of the owned lines of @p constraints and of the dofs they
+    /// refer to, where this rank sees them.
+    Nodes
+    constrained_nodes(const AffineConstraints<double> &constraints) const;
+
     /// The Gram matrices of all parts, part after part, row by row.
     std::vector<double>
     gram_matrices(const AffineConstraints<double> &constraints) const;
 
     const DoFHandler<dim> &dof_handler;
     MeshParts<dim>         mesh_parts;
-    /// Component and position of every displacement dof this rank sees,
-    /// relative to the centre of its part and scaled by the part's size.
-    std::map<types::global_dof_index, std::pair<unsigned int, Point<dim>>>
-      nodes;
   };
 } // namespace VPContact
 
