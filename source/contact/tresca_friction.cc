@@ -240,6 +240,30 @@ namespace VPContact
 
 
 
+  namespace
+  {
+    // The vertices of this rank's contact faces, face by face, in one pass
+    // over the cells: check_bound() evaluates the bound there at every
+    // step of the run, and a pass over the mesh per step would cost the
+    // cells times the steps.
+    template <int dim>
+    std::vector<Point<dim>>
+    contact_vertices(const parallel::TriangulationBase<dim> &triangulation,
+                     const std::set<types::boundary_id>     &contact_ids)
+    {
+      std::vector<Point<dim>> vertices;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && contact_ids.count(face->boundary_id()))
+              for (const unsigned int v : face->vertex_indices())
+                vertices.push_back(face->vertex(v));
+      return vertices;
+    }
+  } // namespace
+
+
+
   template <int dim>
   double
   TrescaFriction<dim>::check_bound(
@@ -253,6 +277,8 @@ namespace VPContact
     const bool           coulomb = (law == FrictionLaw::coulomb);
     FunctionParser<dim> &function
       = (coulomb ? *friction_coefficient : *friction_bound);
+    const std::vector<Point<dim>> vertices
+      = contact_vertices(triangulation, contact_ids);
     double     g_min = std::numeric_limits<double>::max();
     double     g_max = 0;
     Point<dim> where;
@@ -260,26 +286,22 @@ namespace VPContact
     for (const double t : times)
       {
         function.set_time(t);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary() && contact_ids.count(face->boundary_id()))
-                for (const unsigned int v : face->vertex_indices())
-                  {
-                    const double g = function.value(face->vertex(v));
-                    g_max          = std::max(g_max, g);
-                    // A value that is not finite counts as -infinity.
-                    if (std::isfinite(g) ?
-                          g < g_min :
-                          g_min > -std::numeric_limits<double>::infinity())
-                      {
-                        g_min = (std::isfinite(g) ?
-                                   g :
-                                   -std::numeric_limits<double>::infinity());
-                        where = face->vertex(v);
-                        when  = t;
-                      }
-                  }
+        for (const Point<dim> &vertex : vertices)
+          {
+            const double g = function.value(vertex);
+            g_max          = std::max(g_max, g);
+            // A value that is not finite counts as -infinity.
+            if (std::isfinite(g) ?
+                  g < g_min :
+                  g_min > -std::numeric_limits<double>::infinity())
+              {
+                g_min = (std::isfinite(g) ?
+                           g :
+                           -std::numeric_limits<double>::infinity());
+                where = vertex;
+                when  = t;
+              }
+          }
       }
     const double global_min
       = Utilities::MPI::min(g_min, triangulation.get_communicator());
