@@ -41,13 +41,15 @@ def gmsh_scene(a, n, folder):
             subprocess.run([sys.executable, os.path.join(
                 ROOT, "prm", "meshes", "make_l_shape.py"), str(n),
                 "triangles", "shuffled"], stdout=f, check=True)
-    # The boundary ids of make_l_shape.py: 1 bottom, 2 left, 3 right end.
+    # The boundary ids of make_l_shape.py: 1 bottom, 2 left, 3 right end,
+    # 4 the rest (traction free; a mesh file's ids must all be named).
     return scene(f"subsection Geometry\n  set Mesh = file\n"
                  f"  set Mesh file = {mesh}\nend\n"
                  "subsection Boundary conditions\n"
                  "  set Clamped boundary ids  = 2\n"
                  "  set Traction boundary ids = 3\n"
                  "  set Contact boundary ids  = 1\n"
+                 "  set Free boundary ids     = 4\n"
                  "  set Traction              = 20*t; -40*t\nend\n", folder)
 
 
