@@ -8,28 +8,6 @@
 
 namespace VPContact
 {
-  BoundStatus
-  box_decision(const double      lambda,
-               const double      zeta,
-               const double      c,
-               const BoundStatus current,
-               const double      tolerance)
-  {
-    // Entering a set needs the test to hold by more than the tolerance;
-    // staying in it, only not to fail by more than the tolerance.
-    const double upper_margin
-      = (current == BoundStatus::upper ? -tolerance : tolerance);
-    const double lower_margin
-      = (current == BoundStatus::lower ? -tolerance : tolerance);
-    if (lambda + c * (zeta - 1.) > upper_margin)
-      return BoundStatus::upper;
-    if (lambda + c * zeta < -lower_margin)
-      return BoundStatus::lower;
-    return BoundStatus::free;
-  }
-
-
-
   void
   DamageBounds::setup(const IndexSet        &damage_dofs,
                       const IndexSet        &locally_owned_dofs,

@@ -39,12 +39,27 @@ namespace VPContact
    * leaves its @p current set only if the test is violated by more than
    * @p tolerance (in units of lambda), which ends such cycles.
    */
-  BoundStatus
+  inline BoundStatus
   box_decision(const double      lambda,
                const double      zeta,
                const double      c,
                const BoundStatus current   = BoundStatus::free,
-               const double      tolerance = 0.);
+               const double      tolerance = 0.)
+  {
+    // Entering a set needs the test to hold by more than the tolerance;
+    // staying in it, only not to fail by more than the tolerance. Inline:
+    // DamageBounds::update() calls it for every node after every damage
+    // solve.
+    const double upper_margin
+      = (current == BoundStatus::upper ? -tolerance : tolerance);
+    const double lower_margin
+      = (current == BoundStatus::lower ? -tolerance : tolerance);
+    if (lambda + c * (zeta - 1.) > upper_margin)
+      return BoundStatus::upper;
+    if (lambda + c * zeta < -lower_margin)
+      return BoundStatus::lower;
+    return BoundStatus::free;
+  }
 
   /**
    * The active sets of the damage bounds on the locally relevant damage
