@@ -33,12 +33,13 @@ namespace VPContact
         [&history,
          n_q_points](const typename Triangulation<dim>::cell_iterator &cell,
                      const typename Triangulation<dim>::CellStatus) {
-          const auto points = history.get_data(cell);
-          const auto rates  = history.initial_rates(cell);
+          const auto points  = history.get_data(cell);
+          const auto rates   = history.initial_rates(cell);
+          const auto sources = history.damage_sources(cell);
           AssertDimension(points.size(), n_q_points);
           std::vector<double> values(n_q_points * n_values);
           for (unsigned int q = 0; q < n_q_points; ++q)
-            points[q].write_to(&values[q * n_values], rates[q]);
+            points[q].write_to(&values[q * n_values], rates[q], sources[q]);
           std::vector<char> bytes(values.size() * sizeof(double));
           std::memcpy(bytes.data(), values.data(), bytes.size());
           return bytes;
@@ -92,11 +93,12 @@ namespace VPContact
                           "of the program."));
           std::vector<double> values(n_q_points * n_values);
           std::memcpy(values.data(), &*bytes.begin(), bytes.size());
-          const auto points = history.get_data(cell);
-          const auto rates  = history.initial_rates(cell);
+          const auto points  = history.get_data(cell);
+          const auto rates   = history.initial_rates(cell);
+          const auto sources = history.damage_sources(cell);
           AssertDimension(points.size(), n_q_points);
           for (unsigned int q = 0; q < n_q_points; ++q)
-            points[q].read_from(&values[q * n_values], rates[q]);
+            points[q].read_from(&values[q * n_values], rates[q], sources[q]);
         });
     }
 

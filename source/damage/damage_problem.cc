@@ -80,23 +80,21 @@ namespace VPContact
     // source is stored at the Gauss points by the assembly of the
     // displacement step, integrated with the shape values @p psi_gauss of
     // reference_shape_values() and the JxW stored with it.
-    template <int dim>
     void
-    damage_cell_load(
-      const double                                       *cell_mass,
-      const std::vector<double>                          &old_nodal,
-      const FullMatrix<double>                           &psi_gauss,
-      const ArrayView<const double>                      &JxW,
-      const ArrayView<const QuadraturePointHistory<dim>> &history,
-      const double                                        k,
-      Vector<double>                                     &cell_rhs)
+    damage_cell_load(const double                  *cell_mass,
+                     const std::vector<double>     &old_nodal,
+                     const FullMatrix<double>      &psi_gauss,
+                     const ArrayView<const double> &JxW,
+                     const ArrayView<const double> &source,
+                     const double                   k,
+                     Vector<double>                &cell_rhs)
     {
       const unsigned int n_shape = old_nodal.size();
       for (unsigned int a = 0; a < n_shape; ++a)
         cell_rhs(a) = cell_mass[a] * old_nodal[a] / k;
       for (unsigned int q = 0; q < JxW.size(); ++q)
         {
-          const double weight = history[q].damage_source * JxW[q];
+          const double weight = source[q] * JxW[q];
           for (unsigned int a = 0; a < n_shape; ++a)
             cell_rhs(a) += psi_gauss(q, a) * weight;
         }
@@ -226,6 +224,8 @@ namespace VPContact
     cell_mass.assign(n_entries, 0.);
     cell_positions.assign(n_entries, 0);
     cell_owned.assign(n_entries, -1);
+    plain_cells.clear();
+    other_cells.clear();
     for (const auto &cell : dof_handler->active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -240,6 +240,10 @@ namespace VPContact
           store_cell_mass(cell, dof_indices, local_mass);
         }
     mass.compress(VectorOperation::add);
+    load_through_assembly
+      = Utilities::MPI::max(static_cast<unsigned int>(!other_cells.empty()),
+                            communicator)
+        > 0;
     lumped_mass.reinit(system.owned(), system.relevant(), communicator);
     lumped_mass = mass;
     IndexSet bounded_dofs(system.relevant().size());
@@ -276,8 +280,13 @@ namespace VPContact
                 && !constraints.is_constrained(dof_indices[a]);
       }
     if (plain)
-      for (unsigned int a = 0; a < n_shape; ++a)
-        cell_owned[first + a] = owned.index_within_set(dof_indices[a]);
+      {
+        for (unsigned int a = 0; a < n_shape; ++a)
+          cell_owned[first + a] = owned.index_within_set(dof_indices[a]);
+        plain_cells.push_back(cell->active_cell_index());
+      }
+    else
+      other_cells.push_back(cell);
   }
 
 
@@ -428,52 +437,57 @@ namespace VPContact
     TimerOutput::Scope t(timer, "Damage assembly");
     // b = M_L zeta_{n-1}/k + (phi_{n-1}, psi), with zeta_{n-1} from the
     // ghosted vector damage and the source stored at the Gauss points by
-    // the displacement step's assembly. No FEValues: the shape values are
-    // those of the reference cell, the vertex-rule masses and the
-    // positions of the nodes in the ghosted vector are kept per cell (see
-    // setup_mass_and_bounds()) and the JxW of the Gauss points with the
-    // stress history. The cells whose nodes are all owned and not hanging
-    // (all of them on one rank without hanging nodes) add their load to the
-    // owned vector by position, in the order of the cells, as
-    // distribute_local_to_global would, without its index lookups; the
-    // others go through the constraints and the ghosted assembly vector,
-    // whose owned part is then added.
+    // the displacement step's assembly. No FEValues and no cell iterators:
+    // the shape values are those of the reference cell, the vertex-rule
+    // masses and the positions of the nodes in the ghosted vector are kept
+    // per cell (see setup_mass_and_bounds()) and the JxW and the source of
+    // the Gauss points with the stress history, all by active cell index.
+    // The cells whose nodes are all owned and not hanging (all of them on
+    // one rank without hanging nodes) add their load to the owned vector by
+    // position, in the order of the cells, as distribute_local_to_global
+    // would, without its index lookups; the others go through the
+    // constraints and the ghosted assembly vector, whose owned part is then
+    // added.
     const auto              &shape   = system.shape_functions();
     const unsigned int       n_shape = shape.size();
     const FullMatrix<double> psi_gauss
       = reference_shape_values(dof_handler->get_fe(), shape, *quadrature);
-    const double                        *damage_values = damage.begin();
-    Vector<double>                       cell_rhs(n_shape);
-    std::vector<double>                  old_nodal(n_shape);
+    const double       *damage_values = damage.begin();
+    const double        k             = time.step_size();
+    Vector<double>      cell_rhs(n_shape);
+    std::vector<double> old_nodal(n_shape);
+    double *const       owned_load = load.begin();
+    const auto          load_of    = [&](const unsigned int index) {
+      const unsigned int first = index * n_shape;
+      for (unsigned int a = 0; a < n_shape; ++a)
+        old_nodal[a] = damage_values[cell_positions[first + a]];
+      damage_cell_load(&cell_mass[first],
+                       old_nodal,
+                       psi_gauss,
+                       history.JxW(index),
+                       history.damage_sources(index),
+                       k,
+                       cell_rhs);
+      return first;
+    };
+    load = 0.;
+    for (const unsigned int index : plain_cells)
+      {
+        const unsigned int first = load_of(index);
+        for (unsigned int a = 0; a < n_shape; ++a)
+          owned_load[cell_owned[first + a]] += cell_rhs(a);
+      }
+    if (!load_through_assembly)
+      return;
     std::vector<types::global_dof_index> dof_indices;
-    load                     = 0.;
-    load_assembly            = 0.;
-    double *const owned_load = load.begin();
-    for (const auto &cell : dof_handler->active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const unsigned int first = cell->active_cell_index() * n_shape;
-          for (unsigned int a = 0; a < n_shape; ++a)
-            old_nodal[a] = damage_values[cell_positions[first + a]];
-          damage_cell_load(&cell_mass[first],
-                           old_nodal,
-                           psi_gauss,
-                           history.JxW(cell),
-                           history.get_data(cell),
-                           time.step_size(),
-                           cell_rhs);
-          if (cell_owned[first] >= 0)
-            for (unsigned int a = 0; a < n_shape; ++a)
-              owned_load[cell_owned[first + a]] += cell_rhs(a);
-          else
-            {
-              system.dof_indices(cell, dof_indices);
-              system.hanging_node_constraints().distribute_local_to_global(
-                cell_rhs,
-                dof_indices,
-                load_assembly);
-            }
-        }
+    load_assembly = 0.;
+    for (const auto &cell : other_cells)
+      {
+        load_of(cell->active_cell_index());
+        system.dof_indices(cell, dof_indices);
+        system.hanging_node_constraints()
+          .distribute_local_to_global(cell_rhs, dof_indices, load_assembly);
+      }
     load_assembly.compress(VectorOperation::add);
     const double *const assembled = load_assembly.begin();
     for (unsigned int i = 0; i < load.locally_owned_size(); ++i)

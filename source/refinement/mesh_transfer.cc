@@ -26,9 +26,10 @@ namespace VPContact
     constexpr unsigned int n_values = QuadraturePointHistory<dim>::n_values;
     const auto             points   = history.get_data(cell);
     const auto             rates    = history.initial_rates(cell);
+    const auto             sources  = history.damage_sources(cell);
     std::vector<double>    values(points.size() * n_values);
     for (unsigned int q = 0; q < points.size(); ++q)
-      points[q].write_to(&values[q * n_values], rates[q]);
+      points[q].write_to(&values[q * n_values], rates[q], sources[q]);
     return values;
   }
 
@@ -43,9 +44,10 @@ namespace VPContact
     constexpr unsigned int n_values = QuadraturePointHistory<dim>::n_values;
     const auto             points   = history.get_data(cell);
     const auto             rates    = history.initial_rates(cell);
+    const auto             sources  = history.damage_sources(cell);
     AssertDimension(values.size(), points.size() * n_values);
     for (unsigned int q = 0; q < points.size(); ++q)
-      points[q].read_from(&values[q * n_values], rates[q]);
+      points[q].read_from(&values[q * n_values], rates[q], sources[q]);
   }
 
 

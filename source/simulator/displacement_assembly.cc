@@ -369,6 +369,7 @@ namespace VPContact
         scratch.damage_source_thread = std::this_thread::get_id();
       }
     const auto history = stress_history.get_data(cell);
+    const auto sources = stress_history.damage_sources(cell);
     for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
         auto &point     = history[q];
@@ -379,7 +380,7 @@ namespace VPContact
                                                       scratch.strains[q],
                                                       scratch.damage_values[q]);
         if (with_damage)
-          point.damage_source
+          sources[q]
             = scratch.damage_source->value(scratch.strains[q],
                                            point.stress,
                                            scratch.damage_values[q],

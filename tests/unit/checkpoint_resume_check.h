@@ -139,12 +139,14 @@ namespace
             const auto points_b = b.history.get_data(cell_b);
             const auto rates_a  = a.history.initial_rates(cell_a);
             const auto rates_b  = b.history.initial_rates(cell_b);
+            const auto phi_a    = a.history.damage_sources(cell_a);
+            const auto phi_b    = b.history.damage_sources(cell_b);
             for (unsigned int q = 0; q < points_a.size(); ++q)
               {
                 double x[QuadraturePointHistory<2>::n_values];
                 double y[QuadraturePointHistory<2>::n_values];
-                points_a[q].write_to(x, rates_a[q]);
-                points_b[q].write_to(y, rates_b[q]);
+                points_a[q].write_to(x, rates_a[q], phi_a[q]);
+                points_b[q].write_to(y, rates_b[q], phi_b[q]);
                 for (unsigned int i = 0; i < std::size(x); ++i)
                   {
                     history_largest = std::max(history_largest, std::abs(x[i]));

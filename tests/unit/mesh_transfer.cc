@@ -107,15 +107,16 @@ namespace
         if (cell->is_locally_owned())
           {
             values.reinit(cell);
-            auto points = history.get_data(cell);
-            auto rates  = history.initial_rates(cell);
+            auto points  = history.get_data(cell);
+            auto rates   = history.initial_rates(cell);
+            auto sources = history.damage_sources(cell);
             for (unsigned int q = 0; q < points.size(); ++q)
               {
                 double v[n_values];
-                points[q].write_to(v, rates[q]);
+                points[q].write_to(v, rates[q], sources[q]);
                 visit(cell, values, q, v);
                 if (store)
-                  points[q].read_from(v, rates[q]);
+                  points[q].read_from(v, rates[q], sources[q]);
               }
           }
     }

@@ -235,6 +235,13 @@ namespace VPContact
     /// whose damage nodes are all owned and not hanging (whose load goes
     /// there directly); -1 in the first entry of the other cells.
     std::vector<int> cell_owned;
+    /// The locally owned cells, split as above: the active cell indices of
+    /// those whose load goes into the owned vector directly, and the
+    /// others, whose load goes through the constraints; and whether the
+    /// others exist on any rank (else the load needs no assembly vector).
+    std::vector<unsigned int>                                   plain_cells;
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> other_cells;
+    bool load_through_assembly = true;
 
     unsigned int last_iterations = 0;
     /// How many whole rings of nodes the front of the upper bound moved in

@@ -19,29 +19,30 @@ namespace VPContact
    * step-18's PointHistory). The stress sigma_n is the paper's discrete
    * stress; the predictor sigma_{n-1} + k G_{n-1} is computed once per step
    * during the assembly of the right-hand side and reused by the stress
-   * update, so that G is evaluated once per point and step; the damage
-   * source phi_{n-1} is evaluated there too, with the same state of step
-   * n-1, and used by the damage step.
+   * update, so that G is evaluated once per point and step. The damage
+   * source phi_{n-1}, evaluated there too with the same state of step n-1,
+   * is kept beside the points by StressHistory (damage_sources()).
    */
   template <int dim>
   struct QuadraturePointHistory
   {
     SymmetricTensor<2, dim> stress;
     SymmetricTensor<2, dim> predictor;
-    /// phi_{n-1}, the damage source of the current step (damage scenes).
-    double damage_source = 0;
     /// The number of doubles that write_to() and read_from() use: the
-    /// members and G_0, the viscoplastic rate of the initial state, which
-    /// StressHistory keeps beside the points (initial_rates()); a
-    /// checkpoint stores this many per quadrature point. A new member must
-    /// be added to all three.
+    /// members, G_0, the viscoplastic rate of the initial state, and the
+    /// damage source phi_{n-1}, both of which StressHistory keeps beside
+    /// the points (initial_rates(), damage_sources()); a checkpoint stores
+    /// this many per quadrature point. A new member must be added to all
+    /// three.
     static constexpr unsigned int n_values
       = 3 * SymmetricTensor<2, dim>::n_independent_components + 1;
 
-    /// Copy every member and @p initial_rate into @p values (n_values of
-    /// them), for checkpoints.
+    /// Copy every member, @p initial_rate and @p damage_source into
+    /// @p values (n_values of them), for checkpoints.
     void
-    write_to(double *values, const SymmetricTensor<2, dim> &initial_rate) const
+    write_to(double                        *values,
+             const SymmetricTensor<2, dim> &initial_rate,
+             const double                   damage_source) const
     {
       for (unsigned int c = 0;
            c < SymmetricTensor<2, dim>::n_independent_components;
@@ -56,7 +57,9 @@ namespace VPContact
 
     /// The inverse of write_to().
     void
-    read_from(const double *values, SymmetricTensor<2, dim> &initial_rate)
+    read_from(const double            *values,
+              SymmetricTensor<2, dim> &initial_rate,
+              double                  &damage_source)
     {
       for (unsigned int c = 0;
            c < SymmetricTensor<2, dim>::n_independent_components;
@@ -83,7 +86,12 @@ namespace VPContact
    * state, to which the time part of the error estimate refers
    * (ErrorEstimator): only the estimate reads it, and the passes of every
    * step over the points (right-hand side, stress update, damage load)
-   * then stream 56 bytes per point in 2D rather than 80.
+   * then stream 48 bytes per point in 2D rather than 80.
+   *
+   * The damage source phi_{n-1} of every point is kept in an array of its
+   * own (damage_sources()): the assembly of the right-hand side writes it,
+   * and the damage load, the only pass that reads it, then streams 8 bytes
+   * per point rather than the whole point.
    *
    * It also keeps the JxW of every point, given once per mesh by
    * set_JxW(): the passes that only integrate what is stored here (cell
@@ -101,6 +109,7 @@ namespace VPContact
     {
       data.clear();
       rates.clear();
+      sources.clear();
       weights.clear();
       initialized.clear();
       n_points = 0;
@@ -117,6 +126,7 @@ namespace VPContact
           n_points = n_q_points;
           data.resize(cell->get_triangulation().n_active_cells() * n_points);
           rates.resize(data.size());
+          sources.assign(data.size(), 0.);
           weights.assign(data.size(), 0.);
           initialized.assign(cell->get_triangulation().n_active_cells(), false);
         }
@@ -127,6 +137,9 @@ namespace VPContact
       std::fill(rates.begin() + c * n_points,
                 rates.begin() + (c + 1) * n_points,
                 SymmetricTensor<2, dim>());
+      std::fill(sources.begin() + c * n_points,
+                sources.begin() + (c + 1) * n_points,
+                0.);
       initialized[c] = true;
     }
 
@@ -159,6 +172,38 @@ namespace VPContact
       return {rates.data() + cell->active_cell_index() * n_points, n_points};
     }
 
+    /// phi_{n-1} at the points of @p cell (damage scenes).
+    ArrayView<double>
+    damage_sources(const cell_iterator &cell)
+    {
+      Assert(initialized[cell->active_cell_index()], ExcInternalError());
+      return {sources.data() + cell->active_cell_index() * n_points, n_points};
+    }
+
+    ArrayView<const double>
+    damage_sources(const cell_iterator &cell) const
+    {
+      Assert(initialized[cell->active_cell_index()], ExcInternalError());
+      return {sources.data() + cell->active_cell_index() * n_points, n_points};
+    }
+
+    /// damage_sources() and JxW() of the cell with active cell index
+    /// @p index, for the passes that run over a list of cells by index
+    /// (DamageProblem's load) rather than over cell iterators.
+    ArrayView<const double>
+    damage_sources(const unsigned int index) const
+    {
+      Assert(initialized[index], ExcInternalError());
+      return {sources.data() + index * n_points, n_points};
+    }
+
+    ArrayView<const double>
+    JxW(const unsigned int index) const
+    {
+      Assert(initialized[index], ExcInternalError());
+      return {weights.data() + index * n_points, n_points};
+    }
+
     /// Store the JxW values @p JxW of the points of @p cell (initialized).
     void
     set_JxW(const cell_iterator &cell, const std::vector<double> &JxW)
@@ -181,6 +226,7 @@ namespace VPContact
   private:
     std::vector<QuadraturePointHistory<dim>> data;
     std::vector<SymmetricTensor<2, dim>>     rates;
+    std::vector<double>                      sources;
     std::vector<double>                      weights;
     std::vector<bool>                        initialized;
     unsigned int                             n_points = 0;
