@@ -2,11 +2,22 @@
 // the function OpenBLAS exports, found at run time.
 #include <vpcontact/linear_algebra/blas_threads.h>
 
+#include <algorithm>
 #include <dlfcn.h>
 #include <initializer_list>
+#include <limits>
 
 namespace VPContact
 {
+  namespace
+  {
+    /// The limit of BlasThreadLimit in this thread.
+    thread_local unsigned int blas_thread_limit
+      = std::numeric_limits<unsigned int>::max();
+  } // namespace
+
+
+
   void
   set_blas_threads(const unsigned int n_threads)
   {
@@ -29,7 +40,7 @@ namespace VPContact
 
   BlasThreads::BlasThreads(const unsigned int n_threads)
   {
-    set_blas_threads(n_threads);
+    set_blas_threads(std::min(n_threads, blas_thread_limit));
   }
 
 
@@ -37,5 +48,20 @@ namespace VPContact
   BlasThreads::~BlasThreads()
   {
     set_blas_threads(1);
+  }
+
+
+
+  BlasThreadLimit::BlasThreadLimit(const unsigned int n_threads)
+    : previous(blas_thread_limit)
+  {
+    blas_thread_limit = n_threads;
+  }
+
+
+
+  BlasThreadLimit::~BlasThreadLimit()
+  {
+    blas_thread_limit = previous;
   }
 } // namespace VPContact

@@ -1,9 +1,11 @@
 // The section "Solver" and the solution of the displacement system.
 #include <vpcontact/input/input_error.h>
+#include <vpcontact/linear_algebra/blas_threads.h>
 #include <vpcontact/linear_algebra/finite_values.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/linear_algebra/linear_solver.h>
 
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/lac/solver_cg.h>
 
 #include <algorithm>
@@ -157,8 +159,46 @@ namespace VPContact
 
 
   void
+  LinearSolver::initialize_in_background(const LA::SparseMatrix &matrix)
+  {
+    if (method != SpdMethod::cholesky)
+      {
+        initialize(matrix, NearNullSpace());
+        return;
+      }
+    clear();
+    solver = create_spd_solver(linear_algebra, method, "Solver/Linear solver");
+    this->matrix             = &matrix;
+    changed_since_initialize = false;
+    iterations_before = iterations_after = 0;
+    // The BLAS gets all cores but the one the caller works on. On the
+    // paper scene at 512^2 cells (2 cores, AMD EPYC) the supernodal
+    // factorization takes as long with one BLAS thread as with two (4.1 s);
+    // beside the caller's setup it takes longer (the two share the memory),
+    // but the first solve then waits about 2 s less for it (scripts/bench,
+    // "AMG setup or factorization").
+    factorizing = std::async(std::launch::async, [this, &matrix]() {
+      const BlasThreadLimit all_but_one(
+        std::max(MultithreadInfo::n_threads(), 2u) - 1);
+      solver->initialize(matrix, NearNullSpace());
+    });
+  }
+
+
+
+  void
+  LinearSolver::wait_for_factors()
+  {
+    if (factorizing.valid())
+      factorizing.get();
+  }
+
+
+
+  void
   LinearSolver::clear()
   {
+    wait_for_factors();
     solver.reset();
     matrix                   = nullptr;
     changed_since_initialize = false;
@@ -259,6 +299,7 @@ namespace VPContact
   unsigned int
   LinearSolver::solve(LA::MPI::Vector &x, const LA::MPI::Vector &b)
   {
+    wait_for_factors();
     const double b_norm = checked_norm(b);
     if (b_norm == 0.)
       {
@@ -317,6 +358,7 @@ namespace VPContact
                                     const std::function<void()> &then)
   {
     Assert(solves_in_background(), ExcInternalError());
+    wait_for_factors();
     // What solve() does with a factorization, in the same order: the checks
     // and the norm (reductions over the ranks) here, in the calling thread;
     // the substitutions in the second thread, which touches nothing but the
@@ -348,6 +390,7 @@ namespace VPContact
   void
   LinearSolver::precondition(LA::MPI::Vector &dst, const LA::MPI::Vector &src)
   {
+    wait_for_factors();
     solver->precondition(dst, src);
   }
 

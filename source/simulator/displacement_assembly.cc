@@ -85,6 +85,8 @@ namespace VPContact
   DisplacementProblem<dim>::assemble_stiffness_matrix()
   {
     TimerOutput::Scope t(computing_timer, "Assemble matrix");
+    // A factorization begun in the background reads the matrix.
+    displacement.solver.wait_for_factors();
 
     // K_ij = (E eps(phi_j), eps(phi_i)): the paper's matrix k E divided by
     // k, since the unknown is the increment k w. It does not change while

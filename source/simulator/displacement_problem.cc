@@ -144,6 +144,13 @@ namespace VPContact
     // freedom that no longer exist; the constraints below must not see them.
     if (friction_problem)
       friction_problem->clear();
+    // The owned cells, over which the matrix and every pass over the cells
+    // run.
+    owned_cells.clear();
+    rhs_chunks.clear();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned_cells.push_back(cell);
     measure_body();
     setup_block_views();
     // The constraints at t = 0 have the structure of those of every step
@@ -364,11 +371,6 @@ namespace VPContact
           stress_history.set_JxW(cell, fe_values.get_JxW_values());
         }
     cell_kinematics.reinit(dof_handler, quadrature, solution);
-    owned_cells.clear();
-    rhs_chunks.clear();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        owned_cells.push_back(cell);
   }
 
 

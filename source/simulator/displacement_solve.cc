@@ -18,7 +18,7 @@ namespace VPContact
 {
   template <int dim>
   void
-  DisplacementProblem<dim>::initialize_linear_solver()
+  DisplacementProblem<dim>::initialize_linear_solver(const bool in_background)
   {
     TimerOutput::Scope t(computing_timer, "Build preconditioner");
     // A matrix with an infinite entry makes the factorizations fail deep
@@ -31,10 +31,25 @@ namespace VPContact
                              "Rescale the units of the scene."));
     // The rigid motions are AMG's near null space; a factorization has no
     // use for them, and they cost a pass over every node's support point.
-    displacement.solver.initialize(displacement.matrix,
-                                   displacement.solver.is_direct() ?
-                                     NearNullSpace() :
-                                     rigid_motions());
+    if (in_background)
+      displacement.solver.initialize_in_background(displacement.matrix);
+    else
+      displacement.solver.initialize(displacement.matrix,
+                                     displacement.solver.is_direct() ?
+                                       NearNullSpace() :
+                                       rigid_motions());
+  }
+
+
+
+  template <int dim>
+  void
+  DisplacementProblem<dim>::wait_for_linear_solver()
+  {
+    // The part of a factorization begun in the background that the work
+    // since did not hide counts as building it.
+    TimerOutput::Scope t(computing_timer, "Build preconditioner");
+    displacement.solver.wait_for_factors();
   }
 
 
@@ -127,6 +142,7 @@ namespace VPContact
   void
   DisplacementProblem<dim>::solve_displacement()
   {
+    wait_for_linear_solver();
     if (displacement.solver.preconditioner_outdated())
       initialize_linear_solver();
     TimerOutput::Scope t(computing_timer, "Solve");
@@ -151,6 +167,7 @@ namespace VPContact
     // displacement.rhs, and must not change the linear solver. Other
     // methods, and the factors after the matrix changed in place, solve
     // after the work.
+    wait_for_linear_solver();
     if (displacement.solver.preconditioner_outdated())
       initialize_linear_solver();
     if (!displacement.solver.solves_in_background())

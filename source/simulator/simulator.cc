@@ -227,12 +227,31 @@ namespace VPContact
   {
     // The mesh's degrees of freedom, quadrature data, damage problem and
     // matrix; returns the first step to compute.
+    //
+    // A new run's matrix depends only on the degrees of freedom and the
+    // constraints with every contact node sticking, so it is assembled as
+    // soon as they exist, and a Cholesky factorization of it then runs in
+    // a second thread while this one sets up the rest (quadrature data,
+    // damage problem, estimator) and computes the initial state and the
+    // first step's right-hand side: the factorization does not gain from a
+    // second BLAS thread, so the second core is otherwise idle. A resumed
+    // run takes the state of its checkpoint's step, stick set included,
+    // and continues after it (simulator_checkpoint.cc); its matrix comes
+    // after that.
     start_cycle(cycle);
-    setup_on_mesh();
-    // A resumed run takes the state of its checkpoint's step and continues
-    // after it (simulator_checkpoint.cc).
-    const unsigned int first_step
-      = (checkpointing.resume() ? restore_checkpoint() + 1 : 1);
+    const bool resume = checkpointing.resume();
+    setup_on_mesh([this, resume]() {
+      if (resume)
+        return;
+      displacement_problem.assemble_stiffness_matrix();
+      displacement_problem.initialize_linear_solver(true);
+    });
+    if (!resume)
+      {
+        print_header();
+        return 1;
+      }
+    const unsigned int first_step = restore_checkpoint() + 1;
     displacement_problem.assemble_stiffness_matrix();
     displacement_problem.initialize_linear_solver();
     print_header();

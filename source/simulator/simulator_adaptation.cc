@@ -14,13 +14,15 @@ namespace VPContact
 {
   template <int dim>
   void
-  Simulator<dim>::setup_on_mesh()
+  Simulator<dim>::setup_on_mesh(const std::function<void()> &after_dofs)
   {
     // The degrees of freedom, the quadrature points, the physics objects
     // and the estimator's recovery space on the current mesh. The estimate
     // recovers its fields on a physics object's scalar node space (the
     // damage block) where there is one, else on a space of its own.
     setup_dofs();
+    if (after_dofs)
+      after_dofs();
     displacement_problem.setup_stress_history();
     std::optional<ScalarNodeSpace<dim>> nodes;
     for (Physics<dim> *object : physics)

@@ -32,6 +32,27 @@ namespace VPContact
     operator=(const BlasThreads &)
       = delete;
   };
+
+  /**
+   * While this object lives, BlasThreads in the calling thread asks for at
+   * most @p n_threads. A factorization in a second thread
+   * (LinearSolver::initialize_in_background()) keeps to one core so:
+   * OpenBLAS's own threads wait for work by spinning, and would take the
+   * core that the calling thread's work beside the factorization needs.
+   */
+  class BlasThreadLimit
+  {
+  public:
+    explicit BlasThreadLimit(const unsigned int n_threads);
+    ~BlasThreadLimit();
+    BlasThreadLimit(const BlasThreadLimit &) = delete;
+    BlasThreadLimit &
+    operator=(const BlasThreadLimit &)
+      = delete;
+
+  private:
+    unsigned int previous;
+  };
 } // namespace VPContact
 
 #endif

@@ -65,6 +65,23 @@ namespace VPContact
     initialize(const LA::SparseMatrix &matrix,
                const NearNullSpace    &near_null_space);
 
+    /**
+     * initialize() in a second thread where the method is Cholesky (one
+     * process; else initialize() itself): returns at once, so that the
+     * caller can go on with work that needs neither the factors nor the
+     * matrix, which must not change until the factors are done. Every
+     * function of this class that uses the factors waits for them first
+     * (wait_for_factors()). The second thread calls no MPI function, and
+     * the BLAS keeps to one thread there (BlasThreadLimit).
+     */
+    void
+    initialize_in_background(const LA::SparseMatrix &matrix);
+
+    /// Wait for the factors of initialize_in_background(), if they are
+    /// being built; rethrows what the factorization threw.
+    void
+    wait_for_factors();
+
     /// Release the preconditioner or factorization (before the matrix it
     /// refers to is re-initialised or destroyed).
     void
@@ -162,6 +179,10 @@ namespace VPContact
     bool                       loose              = false;
     unsigned int               max_iterations     = 1000;
     std::unique_ptr<SpdSolver> solver;
+    /// The factorization of initialize_in_background() while it runs
+    /// (declared after solver: destroyed first, it waits for the thread
+    /// before the solver goes).
+    std::future<void> factorizing;
     /// The matrix of initialize(), and whether it changed since.
     const LA::SparseMatrix *matrix                   = nullptr;
     bool                    changed_since_initialize = false;

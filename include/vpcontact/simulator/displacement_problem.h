@@ -140,8 +140,14 @@ namespace VPContact
     /// method on the whole step).
     void
     solve_increment_implicit(const double time);
+    /**
+     * Build the preconditioner or factors of the displacement matrix; with
+     * @p in_background, a factorization on one process runs in a second
+     * thread (LinearSolver::initialize_in_background()) and the first solve
+     * waits for it. Until then the matrix must not change.
+     */
     void
-    initialize_linear_solver();
+    initialize_linear_solver(const bool in_background = false);
     void
     report_solve_floor();
 
@@ -315,6 +321,9 @@ namespace VPContact
     solve_displacement();
     void
     solve_displacement_beside(const std::function<void()> &beside);
+    /// Wait for factors begun in the background, timed as building them.
+    void
+    wait_for_linear_solver();
     /// After a solve: the constrained entries of du, and its ghosted copy.
     void
     share_increment();

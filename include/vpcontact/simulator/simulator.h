@@ -149,8 +149,10 @@ namespace VPContact
     make_snapshot(const double time) const;
 
     // simulator_adaptation.cc
+    /// The setup on the current mesh; @p after_dofs runs once the degrees
+    /// of freedom and constraints exist, before the rest.
     void
-    setup_on_mesh();
+    setup_on_mesh(const std::function<void()> &after_dofs = {});
     void
     adapt_mesh(const unsigned int n);
     void
