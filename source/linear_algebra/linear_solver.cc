@@ -159,11 +159,12 @@ namespace VPContact
 
 
   void
-  LinearSolver::initialize_in_background(const LA::SparseMatrix &matrix)
+  LinearSolver::initialize_in_background(const LA::SparseMatrix &matrix,
+                                         const NearNullSpace &near_null_space)
   {
     if (method != SpdMethod::cholesky)
       {
-        initialize(matrix, NearNullSpace());
+        initialize(matrix, near_null_space);
         return;
       }
     clear();

@@ -31,13 +31,13 @@ namespace VPContact
                              "Rescale the units of the scene."));
     // The rigid motions are AMG's near null space; a factorization has no
     // use for them, and they cost a pass over every node's support point.
+    const NearNullSpace near_null_space
+      = (displacement.solver.is_direct() ? NearNullSpace() : rigid_motions());
     if (in_background)
-      displacement.solver.initialize_in_background(displacement.matrix);
+      displacement.solver.initialize_in_background(displacement.matrix,
+                                                   near_null_space);
     else
-      displacement.solver.initialize(displacement.matrix,
-                                     displacement.solver.is_direct() ?
-                                       NearNullSpace() :
-                                       rigid_motions());
+      displacement.solver.initialize(displacement.matrix, near_null_space);
   }
 
 

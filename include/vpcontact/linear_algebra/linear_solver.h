@@ -67,7 +67,8 @@ namespace VPContact
 
     /**
      * initialize() in a second thread where the method is Cholesky (one
-     * process; else initialize() itself): returns at once, so that the
+     * process; else initialize() itself, with @p near_null_space for
+     * AMG): returns at once, so that the
      * caller can go on with work that needs neither the factors nor the
      * matrix, which must not change until the factors are done. Every
      * function of this class that uses the factors waits for them first
@@ -75,7 +76,8 @@ namespace VPContact
      * the BLAS keeps to one thread there (BlasThreadLimit).
      */
     void
-    initialize_in_background(const LA::SparseMatrix &matrix);
+    initialize_in_background(const LA::SparseMatrix &matrix,
+                             const NearNullSpace    &near_null_space);
 
     /// Wait for the factors of initialize_in_background(), if they are
     /// being built; rethrows what the factorization threw.
