@@ -199,7 +199,15 @@ namespace VPContact
   void
   LinearSolver::clear()
   {
-    wait_for_factors();
+    // A factorization still running in the background reads the matrix:
+    // wait for it to end. Its factors go, and so does an error it met: the
+    // matrix is about to be replaced or destroyed (and a destructor, which
+    // calls this, must not throw).
+    if (factorizing.valid())
+      {
+        factorizing.wait();
+        factorizing = std::future<void>();
+      }
     solver.reset();
     matrix                   = nullptr;
     changed_since_initialize = false;

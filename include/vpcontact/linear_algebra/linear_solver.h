@@ -85,7 +85,9 @@ namespace VPContact
     wait_for_factors();
 
     /// Release the preconditioner or factorization (before the matrix it
-    /// refers to is re-initialised or destroyed).
+    /// refers to is re-initialised or destroyed); a factorization still
+    /// running in the background is waited for and dropped, with any error
+    /// it met.
     void
     clear();
 

@@ -1,0 +1,124 @@
+// Unit test: LinearSolver::initialize_in_background() with Linear solver =
+// Cholesky. The caller goes on while the factorization runs; the first
+// solve waits for it and solves to round-off; a factorization that breaks
+// down reports its error at the first use of the factors, and clear() after
+// one that nobody waited for (the path of a destructor) does not throw.
+// The matrix is the five-point Laplacian of a 300 x 300 grid plus a shift,
+// so K x = K e has the solution e = (1, ..., 1).
+#include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/linear_solver.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cstdio>
+#include <string>
+
+using namespace VPContact;
+
+namespace
+{
+  // The m^2 x m^2 matrix with diagonal 4 + shift and -1 for each grid
+  // neighbour.
+  void
+  grid_matrix(const unsigned int m, const double shift, LA::SparseMatrix &K)
+  {
+    const unsigned int n = m * m;
+    IndexSet           all(n);
+    all.add_range(0, n);
+    LA::SparsityPattern pattern(all, MPI_COMM_WORLD, 5);
+    const auto          for_neighbours = [m](const unsigned int i, auto add) {
+      const unsigned int x = i % m, y = i / m;
+      add(i);
+      if (x > 0)
+        add(i - 1);
+      if (x + 1 < m)
+        add(i + 1);
+      if (y > 0)
+        add(i - m);
+      if (y + 1 < m)
+        add(i + m);
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      for_neighbours(i, [&](const unsigned int j) { pattern.add(i, j); });
+    pattern.compress();
+    K.reinit(pattern);
+    for (unsigned int i = 0; i < n; ++i)
+      for_neighbours(i, [&](const unsigned int j) {
+        K.set(i, j, i == j ? 4. + shift : -1.);
+      });
+    K.compress(VectorOperation::insert);
+  }
+
+
+
+  LinearSolver
+  cholesky_solver()
+  {
+    ParameterHandler prm;
+    LinearSolver::declare_parameters(prm);
+    prm.enter_subsection("Solver");
+    prm.set("Linear solver", "Cholesky");
+    prm.leave_subsection();
+    LinearSolver solver;
+    solver.parse_parameters(prm);
+    return solver;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int               m = 300;
+  IndexSet                         all(m * m);
+  all.add_range(0, m * m);
+
+  {
+    LA::SparseMatrix K;
+    grid_matrix(m, 1., K);
+    LinearSolver solver = cholesky_solver();
+    solver.initialize_in_background(K, NearNullSpace());
+    // Work beside the factorization: the right-hand side K e.
+    LA::MPI::Vector e(all, MPI_COMM_WORLD), b(e), x(e);
+    e = 1.;
+    K.vmult(b, e);
+    const unsigned int iterations = solver.solve(x, b);
+    x -= e;
+    std::printf("solve after a background factorization: %u iteration(s), "
+                "|x - e|_inf < 1e-12: %s\n",
+                iterations,
+                x.linfty_norm() < 1e-12 ? "yes" : "no");
+  }
+
+  // A shift of -1 makes the matrix indefinite (see unit/sparse_cholesky).
+  LA::SparseMatrix K;
+  grid_matrix(m, -1., K);
+  {
+    LinearSolver solver = cholesky_solver();
+    solver.initialize_in_background(K, NearNullSpace());
+    LA::MPI::Vector b(all, MPI_COMM_WORLD), x(b);
+    b = 1.;
+    try
+      {
+        solver.solve(x, b);
+        std::printf("indefinite matrix solved: wrong\n");
+      }
+    catch (const std::exception &error)
+      {
+        const std::string message = error.what();
+        std::printf("indefinite matrix refused at the first solve: %s\n",
+                    message.find("not positive definite") != std::string::npos ?
+                      "yes" :
+                      "no");
+      }
+  }
+  {
+    LinearSolver solver = cholesky_solver();
+    solver.initialize_in_background(K, NearNullSpace());
+    solver.clear();
+    std::printf("clear() after a failed background factorization: no "
+                "exception\n");
+  }
+}
