@@ -239,18 +239,16 @@ namespace VPContact
     // and continues after it (simulator_checkpoint.cc); its matrix comes
     // after that.
     start_cycle(cycle);
-    const bool resume = checkpointing.resume();
-    setup_on_mesh([this, resume]() {
-      if (resume)
-        return;
-      displacement_problem.assemble_stiffness_matrix();
-      displacement_problem.initialize_linear_solver(true);
-    });
-    if (!resume)
+    if (!checkpointing.resume())
       {
+        setup_on_mesh([this]() {
+          displacement_problem.assemble_stiffness_matrix();
+          displacement_problem.initialize_linear_solver(true);
+        });
         print_header();
         return 1;
       }
+    setup_on_mesh();
     const unsigned int first_step = restore_checkpoint() + 1;
     displacement_problem.assemble_stiffness_matrix();
     displacement_problem.initialize_linear_solver();

@@ -13,44 +13,12 @@
 #include <cstdio>
 #include <string>
 
+#include "grid_matrix.h"
+
 using namespace VPContact;
 
 namespace
 {
-  // The m^2 x m^2 matrix with diagonal 4 + shift and -1 for each grid
-  // neighbour.
-  void
-  grid_matrix(const unsigned int m, const double shift, LA::SparseMatrix &K)
-  {
-    const unsigned int n = m * m;
-    IndexSet           all(n);
-    all.add_range(0, n);
-    LA::SparsityPattern pattern(all, MPI_COMM_WORLD, 5);
-    const auto          for_neighbours = [m](const unsigned int i, auto add) {
-      const unsigned int x = i % m, y = i / m;
-      add(i);
-      if (x > 0)
-        add(i - 1);
-      if (x + 1 < m)
-        add(i + 1);
-      if (y > 0)
-        add(i - m);
-      if (y + 1 < m)
-        add(i + m);
-    };
-    for (unsigned int i = 0; i < n; ++i)
-      for_neighbours(i, [&](const unsigned int j) { pattern.add(i, j); });
-    pattern.compress();
-    K.reinit(pattern);
-    for (unsigned int i = 0; i < n; ++i)
-      for_neighbours(i, [&](const unsigned int j) {
-        K.set(i, j, i == j ? 4. + shift : -1.);
-      });
-    K.compress(VectorOperation::insert);
-  }
-
-
-
   LinearSolver
   cholesky_solver()
   {

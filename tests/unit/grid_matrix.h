@@ -1,0 +1,50 @@
+// The test matrix of the factorization tests: the five-point Laplacian of
+// an m x m grid plus a shift of the diagonal, on one process.
+#ifndef vpcontact_tests_grid_matrix_h
+#define vpcontact_tests_grid_matrix_h
+
+#include <vpcontact/linear_algebra/linear_algebra.h>
+
+#include <deal.II/base/index_set.h>
+
+#include <vector>
+
+namespace VPContact
+{
+  /// The m^2 x m^2 matrix with diagonal 4 + @p shift and -1 for each grid
+  /// neighbour: positive definite where shift > -4 + 4 cos(pi / (m + 1))
+  /// (about -0.045 at m = 20), indefinite with a positive diagonal at
+  /// shift = -1.
+  inline void
+  grid_matrix(const unsigned int m, const double shift, LA::SparseMatrix &K)
+  {
+    const unsigned int n = m * m;
+    IndexSet           all(n);
+    all.add_range(0, n);
+    LA::SparsityPattern pattern(all, MPI_COMM_WORLD, 5);
+    const auto          neighbours = [m](const unsigned int i) {
+      std::vector<unsigned int> list{i};
+      const unsigned int        x = i % m, y = i / m;
+      if (x > 0)
+        list.push_back(i - 1);
+      if (x + 1 < m)
+        list.push_back(i + 1);
+      if (y > 0)
+        list.push_back(i - m);
+      if (y + 1 < m)
+        list.push_back(i + m);
+      return list;
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      for (const unsigned int j : neighbours(i))
+        pattern.add(i, j);
+    pattern.compress();
+    K.reinit(pattern);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const unsigned int j : neighbours(i))
+        K.set(i, j, i == j ? 4. + shift : -1.);
+    K.compress(VectorOperation::insert);
+  }
+} // namespace VPContact
+
+#endif
