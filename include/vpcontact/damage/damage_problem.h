@@ -232,8 +232,8 @@ namespace VPContact
     std::vector<double>       cell_mass;
     std::vector<unsigned int> cell_positions;
     /// The same nodes' positions in the owned vector load, for the cells
-    /// whose damage nodes are all owned and not hanging (whose load goes
-    /// there directly); -1 in the first entry of the other cells.
+    /// whose damage nodes are all owned and not hanging (plain_cells, whose
+    /// load goes there directly); the other cells' entries are not read.
     std::vector<int> cell_owned;
     /// The locally owned cells, split as above: the active cell indices of
     /// those whose load goes into the owned vector directly, and the
