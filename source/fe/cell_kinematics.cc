@@ -173,6 +173,36 @@ namespace VPContact
             positions[c * dofs_per_cell + i]
               = local_position(*layout, dof_indices[i]);
         }
+    collect_displacement_nodes(dof_handler);
+  }
+
+
+
+  template <int dim>
+  void
+  CellKinematics<dim>::collect_displacement_nodes(
+    const DoFHandler<dim> &dof_handler)
+  {
+    // A node is known by the position of its first component.
+    std::vector<std::array<unsigned int, dim>> node_dofs(n_nodes);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      if (component_of[i] < dim)
+        node_dofs[node_of[i]][component_of[i]] = i;
+    std::vector<bool> reached(layout->NumMyElements(), false);
+    node_positions.clear();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int *cell_positions
+            = &positions[cell->active_cell_index() * dofs_per_cell];
+          for (unsigned int a = 0; a < n_nodes; ++a)
+            if (!reached[cell_positions[node_dofs[a][0]]])
+              {
+                reached[cell_positions[node_dofs[a][0]]] = true;
+                for (unsigned int d = 0; d < dim; ++d)
+                  node_positions.push_back(cell_positions[node_dofs[a][d]]);
+              }
+        }
   }
 
 

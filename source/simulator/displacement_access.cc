@@ -71,6 +71,7 @@ namespace VPContact
   StressHistory<dim> &
   DisplacementProblem<dim>::history()
   {
+    stress_sums_current = false;
     return stress_history;
   }
 

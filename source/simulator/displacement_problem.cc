@@ -362,6 +362,7 @@ namespace VPContact
     // shape gradients in cell_kinematics, once per mesh (see StressHistory
     // and CellKinematics).
     stress_history.clear();
+    stress_sums_current = false;
     FEValues<dim> fe_values(mapping, fe, quadrature, update_JxW_values);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())

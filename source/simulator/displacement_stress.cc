@@ -35,12 +35,54 @@ namespace VPContact
         }
       return average / volume;
     }
+
+
+
+    /// The larger of @p largest and the largest |component| of @p stress.
+    /// NaN compares false and is turned into infinity.
+    template <int dim>
+    double
+    larger_component(const SymmetricTensor<2, dim> &stress, double largest)
+    {
+      for (unsigned int i = 0;
+           i < SymmetricTensor<2, dim>::n_independent_components;
+           ++i)
+        {
+          const double value = std::abs(stress.access_raw_entry(i));
+          largest
+            = (value >= largest  ? value :
+               std::isnan(value) ? std::numeric_limits<double>::infinity() :
+                                   largest);
+        }
+      return largest;
+    }
+
+
+
+    /// Adds the energy stored in the stress at the points of a cell,
+    /// 1/2 (E^{-1} sigma, sigma) (for an elastic body 1/2 (E eps(u),
+    /// eps(u)), lowered by viscous relaxation), and the von Mises stress of
+    /// its cell average (the paper's P_Q sigma, as in the fields) to
+    /// @p sums.
+    template <int dim, typename History, typename Weights, typename Sums>
+    void
+    add_cell_stress_measures(const StressQuadraticForm<dim> &compliance,
+                             const History                  &history,
+                             const Weights                  &JxW,
+                             Sums                           &sums)
+    {
+      for (unsigned int q = 0; q < history.size(); ++q)
+        sums.energy += 0.5 * compliance(history[q].stress) * JxW[q];
+      sums.von_mises_max
+        = std::max(sums.von_mises_max,
+                   von_mises_norm(cell_average_stress(history, JxW)));
+    }
   } // namespace
 
 
 
   template <int dim>
-  double
+  typename DisplacementProblem<dim>::StressSums
   DisplacementProblem<dim>::update_stress_chunk(
     const unsigned int  c,
     const double *const increment_entries,
@@ -48,13 +90,13 @@ namespace VPContact
   {
     // sigma_n = sigma_{n-1} + k G_{n-1} + E eps(du) (the predictor with
     // the increment), or, with @p solution_entries, the backward Euler
-    // update, at the points of the cells of chunk c. NaN compares false
-    // and is turned into infinity.
+    // update, at the points of the cells of chunk c.
     const bool implicit = (solution_entries != nullptr);
     std::vector<SymmetricTensor<2, dim>> strain_increments(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> strains(quadrature.size());
     std::vector<double>                  damage_values(quadrature.size(), 1.);
-    double                               largest = 0;
+    StressSums                           sums;
+    const StressQuadraticForm<dim>       compliance(material.compliance());
     const std::size_t first = owned_cells.size() * c / stress_chunks;
     const std::size_t last  = owned_cells.size() * (c + 1) / stress_chunks;
     for (std::size_t i = first; i < last; ++i)
@@ -90,20 +132,15 @@ namespace VPContact
             else
               point.stress
                 = point.predictor + material.stress(strain_increments[q]);
-            for (unsigned int i = 0;
-                 i < SymmetricTensor<2, dim>::n_independent_components;
-                 ++i)
-              {
-                const double value = std::abs(point.stress.access_raw_entry(i));
-                largest            = (value >= largest ?
-                                        value :
-                                      std::isnan(value) ?
-                                        std::numeric_limits<double>::infinity() :
-                                        largest);
-              }
+            sums.largest = larger_component(point.stress, sums.largest);
           }
+        // The measures of the step, while the points are in the cache.
+        add_cell_stress_measures(compliance,
+                                 history,
+                                 stress_history.JxW(cell),
+                                 sums);
       }
-    return largest;
+    return sums;
   }
 
 
@@ -129,10 +166,10 @@ namespace VPContact
       entry = std::copy(increment_owned.block(b).begin(),
                         increment_owned.block(b).end(),
                         entry);
-    stress_chunk_largest.resize(stress_chunks);
+    stress_chunk_sums.resize(stress_chunks);
     stress_ahead.run_ahead(stress_chunks,
                            [this, increment_entries](const unsigned int c) {
-                             stress_chunk_largest[c]
+                             stress_chunk_sums[c]
                                = update_stress_chunk(c, increment_entries);
                            });
   }
@@ -158,7 +195,7 @@ namespace VPContact
     const double *const solution_entries
       = implicit ? cell_kinematics.local_entries(solution) : nullptr;
     const unsigned int first = stress_ahead.take_done();
-    stress_chunk_largest.resize(stress_chunks);
+    stress_chunk_sums.resize(stress_chunks);
     // The local Newton solve of the backward Euler update may fail at a
     // point of one rank's cells only: all ranks stop together.
     stop_together(mpi_communicator, [&]() {
@@ -167,14 +204,16 @@ namespace VPContact
         stress_chunks,
         [&](const unsigned int begin, const unsigned int end) {
           for (unsigned int c = begin; c < end; ++c)
-            stress_chunk_largest[c]
+            stress_chunk_sums[c]
               = update_stress_chunk(c, increment_entries, solution_entries);
         },
         1);
     });
-    double largest = *std::max_element(stress_chunk_largest.begin(),
-                                       stress_chunk_largest.end());
-    largest        = Utilities::MPI::max(largest, mpi_communicator);
+    stress_sums_current = true;
+    double largest      = 0;
+    for (const StressSums &sums : stress_chunk_sums)
+      largest = std::max(largest, sums.largest);
+    largest = Utilities::MPI::max(largest, mpi_communicator);
 
     const double limit
       = viscoplasticity.divergence_limit() * material.youngs_modulus();
@@ -235,46 +274,59 @@ namespace VPContact
   StepMeasures
   DisplacementProblem<dim>::measure_step() const
   {
-    // One pass over the cells for what every step reports (see
-    // measure_chunk()). The sums run over chunks of the cells in the
-    // threads, and the chunks are added in their order: the same bits with
-    // any number of threads.
-    const double *const   entries = cell_kinematics.local_entries(solution);
-    std::vector<StepSums> chunk_sums(stress_chunks);
-    parallel::apply_to_subranges(
-      0u,
-      stress_chunks,
-      [&](const unsigned int begin, const unsigned int end) {
-        for (unsigned int c = begin; c < end; ++c)
-          measure_chunk(c, entries, chunk_sums[c]);
-      },
-      1);
-    StepSums sums;
-    for (const StepSums &chunk : chunk_sums)
+    // What every step reports of its state. The stress update leaves the
+    // stress' sums of each chunk of the cells (update_stress_chunk()); they
+    // are measured here only where the points changed otherwise (the
+    // initial state, a new mesh, a checkpoint). The sums of the chunks are
+    // added in their order: the same bits with any number of threads, and
+    // whichever pass made them.
+    std::vector<StressSums> stress_sums = stress_chunk_sums;
+    if (!stress_sums_current)
       {
-        sums.von_mises_max = std::max(sums.von_mises_max, chunk.von_mises_max);
-        sums.u_square_max  = std::max(sums.u_square_max, chunk.u_square_max);
-        sums.energy += chunk.energy;
-        sums.damaged += chunk.damaged;
-        sums.volume += chunk.volume;
-        sums.u_finite    = sums.u_finite && chunk.u_finite;
-        sums.zeta_finite = sums.zeta_finite && chunk.zeta_finite;
+        stress_sums.resize(stress_chunks);
+        parallel::apply_to_subranges(
+          0u,
+          stress_chunks,
+          [&](const unsigned int begin, const unsigned int end) {
+            for (unsigned int c = begin; c < end; ++c)
+              stress_sums[c] = measure_stress_chunk(c);
+          },
+          1);
       }
+    const double *const     entries = cell_kinematics.local_entries(solution);
+    std::vector<DamageSums> damage_sums(stress_chunks);
+    if (damage_model.is_active())
+      parallel::apply_to_subranges(
+        0u,
+        stress_chunks,
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int c = begin; c < end; ++c)
+            damage_sums[c] = measure_damage_chunk(c, entries);
+        },
+        1);
 
+    StressSums stress;
+    DamageSums damage;
+    for (unsigned int c = 0; c < stress_chunks; ++c)
+      {
+        stress.energy += stress_sums[c].energy;
+        stress.von_mises_max
+          = std::max(stress.von_mises_max, stress_sums[c].von_mises_max);
+        damage.damaged += damage_sums[c].damaged;
+        damage.volume += damage_sums[c].volume;
+        damage.zeta_finite = damage.zeta_finite && damage_sums[c].zeta_finite;
+      }
     StepMeasures measures;
     measures.von_mises_max
-      = Utilities::MPI::max(sums.von_mises_max, mpi_communicator);
-    measures.u_max
-      = Utilities::MPI::max(std::sqrt(sums.u_square_max), mpi_communicator);
-    measures.energy = Utilities::MPI::sum(sums.energy, mpi_communicator);
-    measures.u_finite
-      = !Utilities::MPI::logical_or(!sums.u_finite, mpi_communicator);
+      = Utilities::MPI::max(stress.von_mises_max, mpi_communicator);
+    measures.energy = Utilities::MPI::sum(stress.energy, mpi_communicator);
+    measure_displacement(entries, measures);
     measures.zeta_finite
-      = !Utilities::MPI::logical_or(!sums.zeta_finite, mpi_communicator);
+      = !Utilities::MPI::logical_or(!damage.zeta_finite, mpi_communicator);
     if (damage_model.is_active())
       measures.damaged_fraction
-        = Utilities::MPI::sum(sums.damaged, mpi_communicator)
-          / Utilities::MPI::sum(sums.volume, mpi_communicator);
+        = Utilities::MPI::sum(damage.damaged, mpi_communicator)
+          / Utilities::MPI::sum(damage.volume, mpi_communicator);
     return measures;
   }
 
@@ -282,64 +334,74 @@ namespace VPContact
 
   template <int dim>
   void
-  DisplacementProblem<dim>::measure_chunk(const unsigned int  c,
-                                          const double *const entries,
-                                          StepSums           &sums) const
+  DisplacementProblem<dim>::measure_displacement(const double *const entries,
+                                                 StepMeasures &measures) const
   {
-    // On the cells of chunk @p c:
-    // - the largest von Mises stress of the cell averages of sigma (the
-    //   paper's P_Q sigma, as in the fields);
-    // - the largest nodal |u|, over the nodes of the locally owned cells,
-    //   read through CellKinematics' positions;
-    // - the energy stored in the stress, 1/2 (E^{-1} sigma, sigma): for an
-    //   elastic body 1/2 (E eps(u), eps(u)), lowered by viscous relaxation;
-    // - with damage, the volume where zeta < 1 at the quadrature points.
-    const SymmetricTensor<4, dim> &compliance = material.compliance();
-    const unsigned int             n_nodes = cell_kinematics.nodes_per_cell();
-    std::vector<double>            norm_square(n_nodes), component(n_nodes),
-      zeta(quadrature.size());
+    // The largest nodal |u| over the nodes of the locally owned cells,
+    // each node once (std::max() passes NaN by: it is counted apart).
+    const std::vector<unsigned int> &nodes
+      = cell_kinematics.displacement_node_positions();
+    double u_square_max = 0;
+    bool   u_finite     = true;
+    for (std::size_t i = 0; i < nodes.size(); i += dim)
+      {
+        double norm_square = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          norm_square += entries[nodes[i + d]] * entries[nodes[i + d]];
+        u_square_max = std::max(u_square_max, norm_square);
+        u_finite     = u_finite && std::isfinite(norm_square);
+      }
+    measures.u_max
+      = Utilities::MPI::max(std::sqrt(u_square_max), mpi_communicator);
+    measures.u_finite
+      = !Utilities::MPI::logical_or(!u_finite, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  typename DisplacementProblem<dim>::StressSums
+  DisplacementProblem<dim>::measure_stress_chunk(const unsigned int c) const
+  {
+    StressSums                     sums;
+    const StressQuadraticForm<dim> compliance(material.compliance());
+    for (std::size_t i = owned_cells.size() * c / stress_chunks;
+         i < owned_cells.size() * (c + 1) / stress_chunks;
+         ++i)
+      add_cell_stress_measures(compliance,
+                               stress_history.get_data(owned_cells[i]),
+                               stress_history.JxW(owned_cells[i]),
+                               sums);
+    return sums;
+  }
+
+
+
+  template <int dim>
+  typename DisplacementProblem<dim>::DamageSums
+  DisplacementProblem<dim>::measure_damage_chunk(
+    const unsigned int  c,
+    const double *const entries) const
+  {
+    // The volume where zeta < 1 at the quadrature points.
+    std::vector<double> zeta(quadrature.size());
+    DamageSums          sums;
     for (std::size_t i = owned_cells.size() * c / stress_chunks;
          i < owned_cells.size() * (c + 1) / stress_chunks;
          ++i)
       {
-        const auto &cell    = owned_cells[i];
-        const auto  history = stress_history.get_data(cell);
-        const auto  JxW     = stress_history.JxW(cell);
-        for (unsigned int q = 0; q < history.size(); ++q)
-          sums.energy += 0.5 * (compliance * history[q].stress)
-                         * history[q].stress * JxW[q];
-        sums.von_mises_max
-          = std::max(sums.von_mises_max,
-                     von_mises_norm(cell_average_stress(history, JxW)));
-
-        std::fill(norm_square.begin(), norm_square.end(), 0.);
-        for (unsigned int d = 0; d < dim; ++d)
+        const auto &cell = owned_cells[i];
+        const auto  JxW  = stress_history.JxW(cell);
+        cell_kinematics.damage(cell, entries, make_array_view(zeta));
+        for (unsigned int q = 0; q < JxW.size(); ++q)
           {
-            cell_kinematics.nodal_values(cell,
-                                         entries,
-                                         d,
-                                         make_array_view(component));
-            for (unsigned int a = 0; a < n_nodes; ++a)
-              norm_square[a] += component[a] * component[a];
-          }
-        for (unsigned int a = 0; a < n_nodes; ++a)
-          {
-            sums.u_square_max = std::max(sums.u_square_max, norm_square[a]);
-            sums.u_finite     = sums.u_finite && std::isfinite(norm_square[a]);
-          }
-
-        if (damage_model.is_active())
-          {
-            cell_kinematics.damage(cell, entries, make_array_view(zeta));
-            for (unsigned int q = 0; q < JxW.size(); ++q)
-              {
-                sums.volume += JxW[q];
-                sums.zeta_finite = sums.zeta_finite && std::isfinite(zeta[q]);
-                if (zeta[q] < 1. - 1e-12)
-                  sums.damaged += JxW[q];
-              }
+            sums.volume += JxW[q];
+            sums.zeta_finite = sums.zeta_finite && std::isfinite(zeta[q]);
+            if (zeta[q] < 1. - 1e-12)
+              sums.damaged += JxW[q];
           }
       }
+    return sums;
   }
 
 

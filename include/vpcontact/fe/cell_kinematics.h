@@ -128,6 +128,19 @@ namespace VPContact
                  ArrayView<double>  &&values) const;
 
     /**
+     * The positions in the local entries of the displacement's dim
+     * components at every node of the locally owned cells, each node once:
+     * dim positions per node, in the order the cells first reach the
+     * nodes. For passes over the nodes (the largest |u|), which over the
+     * cells would visit a node once for each of its cells.
+     */
+    const std::vector<unsigned int> &
+    displacement_node_positions() const
+    {
+      return node_positions;
+    }
+
+    /**
      * cell_vector(i) -= sum_q tau_q : eps(phi_i) over the displacement
      * shape functions phi_i of @p cell, for @p weighted_stress tau_q
      * already multiplied by JxW at each point.
@@ -189,6 +202,12 @@ namespace VPContact
     /// ghosted layout.
     std::vector<Point<dim>>   points;
     std::vector<unsigned int> positions;
+    /// See displacement_node_positions().
+    std::vector<unsigned int> node_positions;
+
+    /// Fill node_positions from the positions of the cells.
+    void
+    collect_displacement_nodes(const DoFHandler<dim> &dof_handler);
 
     /// The gradients of cell @p c (its active_cell_index).
     const Tensor<1, dim> *

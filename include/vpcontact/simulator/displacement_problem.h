@@ -409,12 +409,20 @@ namespace VPContact
     apply_newton_correction(const double time, const unsigned int iteration);
 
 
+    /// What a pass over the stress at the points of a chunk of the cells
+    /// finds: its largest component (infinity for NaN), and for
+    /// measure_step() the energy stored in it and the largest von Mises
+    /// stress of the cell averages.
+    struct StressSums
+    {
+      double largest = 0, energy = 0, von_mises_max = 0;
+    };
     /// The stress update of chunk @p c of the cells (see stress_chunks)
     /// from the local entries of the increment and, for the implicit
     /// update, of the solution (else nullptr), as
-    /// CellKinematics::local_entries() gives them; returns its largest
-    /// stress component (infinity for NaN).
-    double
+    /// CellKinematics::local_entries() gives them; returns the new stress'
+    /// StressSums.
+    StressSums
     update_stress_chunk(const unsigned int  c,
                         const double *const increment_entries,
                         const double *const solution_entries = nullptr);
@@ -423,18 +431,24 @@ namespace VPContact
     /// the damage step is done (stress_ahead).
     void
     update_stress_ahead(const double *const increment_entries);
-    /// The partial sums of measure_step() over one chunk of the cells.
-    struct StepSums
+    /// The StressSums of chunk @p c as the points hold them now.
+    StressSums
+    measure_stress_chunk(const unsigned int c) const;
+    /// The damaged volume and the volume of chunk @p c of the cells, for
+    /// the damage of the local @p entries of the solution.
+    struct DamageSums
     {
-      double von_mises_max = 0, u_square_max = 0, energy = 0, damaged = 0,
-             volume = 0;
-      // std::max() passes NaN by: it is counted apart.
-      bool u_finite = true, zeta_finite = true;
+      double damaged = 0, volume = 0;
+      bool   zeta_finite = true;
     };
+    DamageSums
+    measure_damage_chunk(const unsigned int  c,
+                         const double *const entries) const;
+    /// The largest |u| of the local @p entries of the solution into
+    /// @p measures.
     void
-    measure_chunk(const unsigned int  c,
-                  const double *const entries,
-                  StepSums           &sums) const;
+    measure_displacement(const double *const entries,
+                         StepMeasures       &measures) const;
 
     /// Stop with a message if no contact node sticks and the other
     /// constraints leave the body a rigid motion.
@@ -518,10 +532,14 @@ namespace VPContact
     /// The owned cells in chunks and colors for the right-hand side's
     /// threads (made again when the constrained entries change).
     ConflictFreeChunks rhs_chunks;
-    /// The stress chunks done ahead in the second thread, and the largest
-    /// stress component of every chunk (see update_stress()).
-    WorkAhead           stress_ahead;
-    std::vector<double> stress_chunk_largest;
+    /// The stress chunks done ahead in the second thread, and the
+    /// StressSums of every chunk (see update_stress()), which hold the
+    /// stress at the points while stress_sums_current: update_stress() sets
+    /// it, and setup_stress_history() and history() (write access to the
+    /// points) clear it.
+    WorkAhead               stress_ahead;
+    std::vector<StressSums> stress_chunk_sums;
+    bool                    stress_sums_current = false;
 
     /// The diagonal of the body's bounding box (displacement_limit()).
     double body_size = 0;
