@@ -284,6 +284,14 @@ namespace VPContact
     // set_blas_threads()), and as many as deal.II's only while a
     // factorization runs (BlasThreads), instead of one per core in every
     // rank.
+    //
+    // Started without mpirun, Open MPI 4 first launches its runtime daemon
+    // (orted) for the single process, which took 0.2 s of every run on the
+    // machine of doc/performance.md. The program never spawns processes,
+    // so it asks for a singleton without the daemon; under mpirun, other
+    // MPI libraries and with the variable already set this changes
+    // nothing.
+    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
     install_petsc_error_messages();
     set_blas_threads(1);
@@ -307,3 +315,11 @@ namespace VPContact
     return agreement.finish(status, error);
   }
 } // namespace VPContact
+
+
+
+extern "C" int
+vpcontact_run_application(int argc, char **argv)
+{
+  return VPContact::run_application(argc, argv);
+}
