@@ -17,4 +17,9 @@ namespace VPContact
   run_application(int argc, char **argv);
 } // namespace VPContact
 
+/// run_application() under a name without C++ mangling, for the executable,
+/// which loads the library with dlopen() (main.cc).
+extern "C" int
+vpcontact_run_application(int argc, char **argv);
+
 #endif
