@@ -118,7 +118,11 @@ def goals(best, sizes, algebras, every=None):
           + "; ".join(t for _, t in slower[:6]) if slower else
           "every phase no slower" if every else "–"),
          "Each figure is one round: HEAD's run and the earlier commit's "
-         "right after it (`--rounds N` takes the median of N). The AMG "
+         "right after it (`--rounds N` takes the median of N). The "
+         "stress update also sums the step's stored energy and largest "
+         "von Mises stress while the new stress is in the cache, which "
+         "the output phase did in a pass of its own before 4b13578 (at "
+         "211b1ab too): read the two phases together. The AMG "
          "path builds ML once per run with the rigid motions as its "
          "near-null space, where 211b1ab gave it the constant mode of "
          "each component: the setup costs more and the displacement "
