@@ -286,12 +286,11 @@ namespace VPContact
     // rank.
     //
     // Started without mpirun, Open MPI 4 first launches its runtime daemon
-    // (orted) for the single process, which took 0.2 s of every run on the
-    // machine of doc/performance.md. The program never spawns processes,
-    // so it asks for a singleton without the daemon; under mpirun, other
-    // MPI libraries and with the variable already set this changes
-    // nothing.
-    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+    // (orted) for the single process, about 0.2 s. The program keeps it:
+    // without the daemon (OMPI_MCA_ess_singleton_isolated=1) all such
+    // processes of a machine share one session directory, and the first
+    // to end removes the files that another's MPI-IO (the mesh of a
+    // checkpoint) still uses.
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
     install_petsc_error_messages();
     set_blas_threads(1);

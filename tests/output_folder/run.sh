@@ -2,8 +2,9 @@
 # Output and checkpoint folders used as a careless user would: two runs on
 # one folder, a kill -9, a file of the user's in a checkpoint folder, a
 # resume into another output folder, the last step of Checkpoint/Every
-# steps, the screen output piped into head. The scene is scene.prm (the
-# paper scene on 8 x 8 cells) with the changes each case makes.
+# steps, the screen output piped into head, eight runs at once. The scene
+# is scene.prm (the paper scene on 8 x 8 cells) with the changes each case
+# makes.
 # Usage: run.sh VPCONTACT EXPECTED_OUTPUT CASE; prints what it checks and
 # fails if that differs from EXPECTED_OUTPUT.
 set -u
@@ -241,6 +242,33 @@ end'
   echo "resumed with End time = 0.075: exit status $?"
   grep '^Resuming from' fifteen.log
   steps_once out 15
+}
+
+case_concurrent() {
+  # Eight runs at once without mpirun, each into a folder of its own and
+  # each with a checkpoint every step: the MPI library's files of one run
+  # (a singleton's session directory) must not be another's.
+  local k
+  for k in 1 2 3 4 5 6 7 8; do
+    variant "run$k" "subsection Output
+  set Directory = out$k
+end
+subsection Checkpoint
+  set Every steps = 1
+end"
+    "$vpcontact" "run$k.prm" > "run$k.log" 2>&1 &
+    # Started one after another, so that runs end while others write.
+    sleep 0.4
+  done
+  for k in 1 2 3 4 5 6 7 8; do
+    wait -n
+  done
+  for k in 1 2 3 4 5 6 7 8; do
+    grep -q '^Run complete: 20 steps' "run$k.log" \
+      && echo "run $k: complete" \
+      || echo "run $k: $(grep -m 1 -A 2 '^Error' "run$k.log" | tr '\n' ' ')"
+    steps_once "out$k" 20
+  done
 }
 
 case_pipe() {
