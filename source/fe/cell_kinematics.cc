@@ -2,6 +2,7 @@
 // locally owned cell, computed once per mesh, and the strains, damage and
 // stress work evaluated from them.
 #include <vpcontact/fe/cell_kinematics.h>
+#include <vpcontact/fe/fixed_size_cell_kernels.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -128,12 +129,16 @@ namespace VPContact
     n_q_points    = quadrature.size();
     n_nodes       = scalar->n_dofs_per_cell();
     dofs_per_cell = fe.n_dofs_per_cell();
+    n_components  = fe.n_components();
     node_of.resize(dofs_per_cell);
     component_of.resize(dofs_per_cell);
+    node_major = true;
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       {
         component_of[i] = fe.system_to_component_index(i).first;
         node_of[i]      = fe.system_to_component_index(i).second;
+        node_major &= (component_of[i] == i % n_components
+                       && node_of[i] == i / n_components);
       }
     shape_values = scalar_shape_values(*scalar, quadrature);
 
@@ -247,6 +252,19 @@ namespace VPContact
     AssertDimension(strains.size(), n_q_points);
     const unsigned int  c    = cell->active_cell_index();
     const unsigned int *dofs = &positions[c * dofs_per_cell];
+    if (node_major
+        && FixedSizeCellKernels::with_fixed_sizes<dim>(
+          n_nodes,
+          n_components,
+          [&](auto nodes, auto components) {
+            FixedSizeCellKernels::strains<dim, nodes, components>(
+              dofs,
+              entries,
+              cell_gradients(c),
+              n_q_points,
+              strains.data());
+          }))
+      return;
     for (unsigned int q = 0; q < n_q_points; ++q)
       {
         const Tensor<1, dim> *grad = cell_gradients(c) + q * n_nodes;
@@ -272,6 +290,20 @@ namespace VPContact
     Assert(has_damage(), ExcInternalError());
     const unsigned int *dofs
       = &positions[cell->active_cell_index() * dofs_per_cell];
+    if (node_major
+        && FixedSizeCellKernels::with_fixed_sizes<dim>(
+          n_nodes,
+          n_components,
+          [&](auto nodes, auto components) {
+            if constexpr (components == dim + 1)
+              FixedSizeCellKernels::damage<dim, nodes, components>(
+                dofs,
+                entries,
+                shape_values.data(),
+                n_q_points,
+                damage.data());
+          }))
+      return;
     for (unsigned int q = 0; q < n_q_points; ++q)
       {
         double value = 0;
@@ -336,6 +368,18 @@ namespace VPContact
     AssertDimension(weighted_stress.size(), n_q_points);
     AssertDimension(cell_vector.size(), dofs_per_cell);
     const unsigned int c = cell->active_cell_index();
+    if (node_major
+        && FixedSizeCellKernels::with_fixed_sizes<dim>(
+          n_nodes,
+          n_components,
+          [&](auto nodes, auto components) {
+            FixedSizeCellKernels::subtract_stress_work<dim, nodes, components>(
+              cell_gradients(c),
+              weighted_stress.data(),
+              n_q_points,
+              cell_vector.data());
+          }))
+      return;
     // tau : sym(e_c (x) grad N_a) = (tau grad N_a)_c for a symmetric tau:
     // one product per node and point, shared by the dim components.
     std::array<Tensor<1, dim>, max_nodes> traction;

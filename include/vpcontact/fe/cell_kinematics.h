@@ -187,6 +187,13 @@ namespace VPContact
     std::vector<unsigned int> node_of;
     std::vector<unsigned int> component_of;
 
+    /// The number of components, and whether shape function i is node
+    /// i / n_components, component i % n_components: then the passes run
+    /// the kernels of fixed_size_cell_kernels.h where the sizes are those
+    /// of Q1 or P1.
+    unsigned int n_components = 0;
+    bool         node_major   = false;
+
     /// The values of the scalar shape functions at the points, the same on
     /// every cell: N_a(x_q) at q * n_nodes + a.
     std::vector<double> shape_values;
