@@ -106,17 +106,17 @@ namespace VPContact
                      const unsigned int n_components,
                      Kernel           &&kernel)
     {
-      using Q1          = std::integral_constant<int, (1 << dim)>;
-      using P1          = std::integral_constant<int, dim + 1>;
-      using Plain       = std::integral_constant<int, dim>;
-      using WithDamage  = std::integral_constant<int, dim + 1>;
-      const bool damage = (n_components == dim + 1);
-      if (n_components != dim && !damage)
+      using Q1               = std::integral_constant<int, (1 << dim)>;
+      using P1               = std::integral_constant<int, dim + 1>;
+      using Plain            = std::integral_constant<int, dim>;
+      using WithDamage       = std::integral_constant<int, dim + 1>;
+      const bool with_damage = (n_components == dim + 1);
+      if (n_components != dim && !with_damage)
         return false;
       if (n_nodes == Q1::value)
-        damage ? kernel(Q1(), WithDamage()) : kernel(Q1(), Plain());
+        with_damage ? kernel(Q1(), WithDamage()) : kernel(Q1(), Plain());
       else if (n_nodes == P1::value)
-        damage ? kernel(P1(), WithDamage()) : kernel(P1(), Plain());
+        with_damage ? kernel(P1(), WithDamage()) : kernel(P1(), Plain());
       else
         return false;
       return true;
