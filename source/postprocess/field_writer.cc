@@ -9,10 +9,42 @@
 
 #include <memory>
 #include <sstream>
+#include <tbb/task_arena.h>
 #include <utility>
+
+#ifdef __linux__
+#  include <sys/resource.h>
+#  include <sys/syscall.h>
+#  include <unistd.h>
+#endif
 
 namespace VPContact
 {
+  namespace
+  {
+    // Runs @p work, a write in the background, on what the time steps
+    // leave of the cores. The thread takes the lowest scheduling priority
+    // (on Linux, a thread's nice value is its own), and deal.II's parallel
+    // loops inside the work (DataOut's WorkStream over the cells) run in an
+    // arena of this one thread: a TBB worker, which runs at the steps'
+    // priority, would otherwise take a share of them and leave the steps'
+    // own parallel loops a thread short. Where the steps leave no core
+    // idle, the write runs in full when the next output, or the end of the
+    // run, waits for it.
+    template <typename Work>
+    void
+    run_yielding_to_steps(const Work &work)
+    {
+#ifdef __linux__
+      setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
+#endif
+      tbb::task_arena one_thread(1);
+      one_thread.execute(work);
+    }
+  } // namespace
+
+
+
   template <int dim>
   FieldWriter<dim>::~FieldWriter()
   {
@@ -39,7 +71,7 @@ namespace VPContact
     // itself: freed by the thread that waits for the write, they would cost
     // that thread the time of returning every patch's memory. It returns
     // what went wrong, or an empty string.
-    auto task
+    auto write_piece
       = [fields = std::make_shared<FieldPatches<dim>>(std::move(fields)),
          filename,
          flags]() mutable -> std::string {
@@ -76,9 +108,15 @@ namespace VPContact
     };
     started = true;
     if (in_background)
-      write = std::async(std::launch::async, std::move(task));
+      write = std::async(std::launch::async,
+                         [write_piece = std::move(write_piece)]() mutable {
+                           std::string problem;
+                           run_yielding_to_steps(
+                             [&]() { problem = write_piece(); });
+                           return problem;
+                         });
     else
-      failure = task();
+      failure = write_piece();
   }
 
 

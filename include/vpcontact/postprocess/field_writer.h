@@ -53,7 +53,10 @@ namespace VPContact
    * a task of deal.II's threads (TBB): a thread that waits for the end of a
    * parallel loop runs other tasks of its arena meanwhile, so the loops of
    * the next steps (right-hand side, stress update, DataOut) could take up
-   * the whole write and wait for it. The piece is written through a
+   * the whole write and wait for it. The thread runs at the lowest
+   * scheduling priority and builds the patches alone (not with TBB's
+   * workers), so that it takes only the cores the steps leave idle. The
+   * piece is written through a
    * temporary file and a rename, so that it is on disk either whole or not
    * at all.
    *
