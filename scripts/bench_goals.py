@@ -157,7 +157,8 @@ def goals(best, sizes, algebras, every=None):
         ("CG + AMG speed-up from 1 to 2 ranks at least 1.7",
          each(lambda a1, a2: fmt(ratio(a1["total_s"], a2["total_s"]))),
          "A run on 1 rank already uses both cores in its threaded parts "
-         "(assembly, stress update, output), so 2 ranks gain only in the "
+         "(assembly, stress update) and writes its fields in a thread "
+         "beside the steps, so 2 ranks gain only in the "
          "solves: the displacement solve's AMG cycles gain (the column "
          "*displacement solve* of the table above), the damage solves "
          "lose (the next row)."),
