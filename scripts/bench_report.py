@@ -423,17 +423,19 @@ def setup_scaling(csv_path):
     box = {r["cells"]: r for r in rows if r["mesh"] == "box"}
     lines = [
         "", "## Setup against the mesh size", "",
-        "The setup of a run (the timer's *Setup*: degrees of freedom, "
-        "constraints, sparsity patterns, matrices and the damage problem's "
-        "numbering, mass and preconditioner) from a Gmsh file of triangles "
+        "The setup of a run (the timer's *Setup*: the distributed mesh, "
+        "degrees of freedom, constraints, sparsity patterns, matrices and "
+        "the damage problem's numbering, mass and preconditioner) from a "
+        "Gmsh file of triangles "
         "whose nodes and cells come in a random order (the L shape of "
         "`prm/meshes/make_l_shape.py N triangles shuffled`, 6N² triangles) "
         "and from a generated simplex box of as many triangles "
         "(`Subdivisions = 3N, N`), both with gradient damage, one step, on "
         f"{m['ranks']} rank(s); measured by `scripts/bench_setup` at commit "
         f"{m['commit']} on {m['date']} ({m['cpu']}). *before the timer*: "
-        "the process's wall time outside the timer's total, which holds "
-        "reading and checking the mesh file and building the mesh. *ratio*: "
+        "the process's wall time outside the timer's total: loading the "
+        "program's libraries and starting MPI (reading and checking the "
+        "mesh file come after, in the total but not in *Setup*). *ratio*: "
         "the Gmsh file's setup over the box's. `scripts/bench_setup "
         "[--sizes N ...]` (default 50 100 200 310) measures it again.", "",
         "| mesh | cells | dofs | setup [s] | before the timer [s] | "

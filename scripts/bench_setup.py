@@ -76,8 +76,8 @@ def run(a, mesh, n):
     total, phases = bench.timer_table(out)
     cells = re.search(r"mesh: (\d+) cells.*?, (\d+) dofs", out)
     memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
-    # The timer starts with the first cycle: reading and building the mesh
-    # come before it, in the process's wall time.
+    # The timer starts with the simulator: loading the libraries and
+    # starting MPI come before it, in the process's wall time only.
     row.update(cells=int(cells.group(1)), dofs=int(cells.group(2)),
                setup_s=phases["Setup"][1], total_s=total,
                before_timer_s=row["process_wall_s"] - total,

@@ -32,7 +32,6 @@ namespace VPContact
     statistics = Statistics();
     displacement_problem.reset_linear_iterations();
     verification.restore_running_maxima({}); // each cycle's summary is its own
-    computing_timer.reset();
   }
 
 
