@@ -34,9 +34,9 @@ namespace VPContact
     // write runs there, or in full when the next output or the end of the
     // run waits for it. A rank of one thread (several ranks on as many
     // cores) keeps the priority: there the waits for the other ranks are
-    // spent polling, and a write at the lowest priority would wait for the
-    // next output (measured: Postprocess and output 0.5-0.8 s against
-    // 2.6-2.8 s, 2 ranks, 256^2 cells, 11 outputs).
+    // spent polling, and a write at the lowest priority would only run
+    // once the next output waits for it, the whole write then added to
+    // that step.
     template <typename Work>
     void
     run_yielding_to_steps(const Work &work)
