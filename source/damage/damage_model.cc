@@ -82,6 +82,9 @@ namespace VPContact
                                         "Initial damage",
                                         1,
                                         constants);
+    initial_constant.reset();
+    if (is_constant_expression(initial_expression, coordinate_variables(dim)))
+      initial_constant = initial->value(Point<dim>());
     prm.leave_subsection();
   }
 
@@ -124,6 +127,15 @@ namespace VPContact
   DamageModel<dim>::initial_damage() const
   {
     return *initial;
+  }
+
+
+
+  template <int dim>
+  std::optional<double>
+  DamageModel<dim>::constant_initial_damage() const
+  {
+    return initial_constant;
   }
 
 

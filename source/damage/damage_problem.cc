@@ -337,18 +337,30 @@ namespace VPContact
   DamageProblem<dim>::interpolate_initial_damage(
     LA::MPI::BlockVector &solution_owned)
   {
-    // zeta_0, checked against the bounds at every node.
-    const unsigned int n_components = dof_handler->get_fe().n_components();
-    VectorFunctionFromScalarFunctionObject<dim> initial(
-      [&](const Point<dim> &p) { return model.initial_damage().value(p); },
-      dim,
-      n_components);
-    ComponentMask damage_mask(n_components, false);
-    damage_mask.set(dim, true);
-    LA::MPI::Vector interpolated(solution_owned.locally_owned_elements(),
-                                 communicator);
-    VectorTools::interpolate(*dof_handler, initial, interpolated, damage_mask);
-    system.gather(interpolated, damage_owned);
+    // zeta_0, checked against the bounds at every node. A constant (the
+    // default 1, sound material) is its own interpolant at every node of a
+    // Lagrange element: the vector takes it without evaluating the
+    // expression at each node's support point, which on a fine mesh is a
+    // pass over all cells with a mapping.
+    if (const std::optional<double> value = model.constant_initial_damage())
+      damage_owned = *value;
+    else
+      {
+        const unsigned int n_components = dof_handler->get_fe().n_components();
+        VectorFunctionFromScalarFunctionObject<dim> initial(
+          [&](const Point<dim> &p) { return model.initial_damage().value(p); },
+          dim,
+          n_components);
+        ComponentMask damage_mask(n_components, false);
+        damage_mask.set(dim, true);
+        LA::MPI::Vector interpolated(solution_owned.locally_owned_elements(),
+                                     communicator);
+        VectorTools::interpolate(*dof_handler,
+                                 initial,
+                                 interpolated,
+                                 damage_mask);
+        system.gather(interpolated, damage_owned);
+      }
     system.distribute_hanging_nodes(damage_owned);
     // A NaN compares false with everything and would pass the range check
     // below unseen.

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 
 namespace VPContact
 {
@@ -52,6 +53,11 @@ namespace VPContact
     const Function<dim> &
     initial_damage() const;
 
+    /// zeta_0 where its expression is a constant (see
+    /// is_constant_expression()), as in the default 1; else nothing.
+    std::optional<double>
+    constant_initial_damage() const;
+
     unsigned int
     max_iterations() const;
 
@@ -87,6 +93,7 @@ namespace VPContact
     mutable Threads::ThreadLocalStorage<std::shared_ptr<DamageSource<dim>>>
                                          damage_source;
     std::unique_ptr<FunctionParser<dim>> initial;
+    std::optional<double>                initial_constant;
     unsigned int                         iteration_cap = 50;
   };
 } // namespace VPContact

@@ -69,6 +69,17 @@ namespace VPContact
   std::vector<std::string>
   split_outside_parentheses(const std::string &text);
 
+  /**
+   * Whether the expression @p expression, which has parsed, is a constant:
+   * it names none of @p variables and calls no function (not even one of
+   * constant arguments such as sqrt(2), nor rand()). Its named constants
+   * and numbers are what is left. Then its value is the same at every
+   * point, and a field interpolated from it needs no evaluation per node.
+   */
+  bool
+  is_constant_expression(const std::string              &expression,
+                         const std::vector<std::string> &variables);
+
   /// The variables of a function of position and time: x, y (z), t.
   std::vector<std::string>
   coordinate_variables(const unsigned int dim);
