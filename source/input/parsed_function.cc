@@ -249,71 +249,27 @@ namespace VPContact
 
 
 
-  namespace
-  {
-    bool
-    is_digit(const char c)
-    {
-      return std::isdigit(static_cast<unsigned char>(c)) != 0;
-    }
-
-    bool
-    is_name_character(const char c, const bool first)
-    {
-      return std::isalpha(static_cast<unsigned char>(c)) || c == '_'
-             || (!first && is_digit(c));
-    }
-
-    // The position after the number that starts at @p i: digits and points,
-    // then an exponent such as e-3.
-    std::size_t
-    skip_number(const std::string &text, std::size_t i)
-    {
-      while (i < text.size() && (is_digit(text[i]) || text[i] == '.'))
-        ++i;
-      if (i < text.size() && (text[i] == 'e' || text[i] == 'E'))
-        {
-          ++i;
-          if (i < text.size() && (text[i] == '+' || text[i] == '-'))
-            ++i;
-          while (i < text.size() && is_digit(text[i]))
-            ++i;
-        }
-      return i;
-    }
-  } // namespace
-
-
-
   bool
   is_constant_expression(const std::string              &expression,
                          const std::vector<std::string> &variables)
   {
-    // A scan of the text: numbers are skipped, and every name must be
-    // neither a variable nor a function's, i.e. followed by '('.
-    for (std::size_t i = 0; i < expression.size();)
-      {
-        if (is_digit(expression[i]) || expression[i] == '.')
-          {
-            i = skip_number(expression, i);
-            continue;
-          }
-        if (!is_name_character(expression[i], true))
-          {
-            ++i;
-            continue;
-          }
-        const std::size_t start = i;
-        while (i < expression.size() && is_name_character(expression[i], false))
-          ++i;
-        const std::string name = expression.substr(start, i - start);
-        if (std::find(variables.begin(), variables.end(), name)
-            != variables.end())
-          return false;
-        const std::size_t next = expression.find_first_not_of(" \t", i);
-        if (next != std::string::npos && expression[next] == '(')
-          return false;
-      }
+    // The numbers (with their exponents, as in 1e-3) and the names of the
+    // text in turn: a name must be neither a variable nor a function's,
+    // i.e. followed by '('.
+    static const std::regex token(
+      "(?:[0-9]+\\.?[0-9]*|\\.[0-9]+)(?:[eE][-+]?[0-9]+)?"
+      "|([A-Za-z_][A-Za-z0-9_]*)(\\s*\\()?");
+    for (auto match
+         = std::sregex_iterator(expression.begin(), expression.end(), token);
+         match != std::sregex_iterator();
+         ++match)
+      if ((*match)[1].matched
+          && ((*match)[2].matched
+              || std::find(variables.begin(),
+                           variables.end(),
+                           (*match)[1].str())
+                   != variables.end()))
+        return false;
     return true;
   }
 
