@@ -32,6 +32,11 @@ namespace VPContact
         return true;
       if (!std::filesystem::is_directory(folder, error))
         return false;
+      // A run killed between making a checkpoint folder and writing its
+      // marker leaves it empty; an empty folder holds nothing to lose, so
+      // the rotation may replace it and a resumed run is not stopped by it.
+      if (std::filesystem::is_empty(folder, error) && !error)
+        return true;
       if (has_folder_marker(folder, CheckpointManifest::marker))
         return true;
       std::ifstream in(folder + "/" + CheckpointManifest::filename);
