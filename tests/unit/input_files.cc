@@ -134,10 +134,14 @@ namespace
     write("thesis/thesis.tex", "\\chapter{Results}\n");
     write("plain/run.old/thesis.tex", "\\chapter{Old}\n");
     write("pending/run.new/draft.tex", "\\chapter{Draft}\n");
+    // A run killed between making FOLDER.new and writing its marker leaves
+    // the folder empty. It holds nothing to lose, so it is accepted.
+    fs::create_directories("empty/run.new");
     const std::vector<std::pair<std::string, std::string>> cases
       = {{"results", "thesis"},
          {"results", "plain/run"},
          {"results", "pending/run"},
+         {"results", "empty/run"},
          {"results", "results"},
          {"results/deep", "results"},
          {"results", "."}};
@@ -207,6 +211,7 @@ main(int argc, char **argv)
                                    "thesis",
                                    "plain",
                                    "pending",
+                                   "empty",
                                    "results",
                                    "own"})
     fs::remove_all(folder);
