@@ -210,6 +210,7 @@ namespace VPContact
       }
     solver.reset();
     matrix                   = nullptr;
+    null_space               = nullptr;
     changed_since_initialize = false;
   }
 
@@ -223,8 +224,8 @@ namespace VPContact
     solver = create_spd_solver(linear_algebra, method, "Solver/Linear solver");
     solver->initialize(matrix, near_null_space);
     // AMG's rigid motions, for a rebuild after the matrix changed in place.
-    if (method == SpdMethod::cg_amg && &near_null_space != &kept_null_space)
-      kept_null_space = near_null_space;
+    if (method == SpdMethod::cg_amg)
+      null_space = &near_null_space;
     this->matrix             = &matrix;
     changed_since_initialize = false;
     iterations_before = iterations_after = 0;
@@ -328,7 +329,7 @@ namespace VPContact
                                      control.tolerance(),
                                      stale_iterations))
               return stale_iterations;
-            initialize(*matrix, kept_null_space);
+            initialize(*matrix, null_space ? *null_space : NearNullSpace());
           }
         iterations_before = solver->solve(x, b, control);
         return stale_iterations + iterations_before;

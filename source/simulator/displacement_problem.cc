@@ -242,8 +242,11 @@ namespace VPContact
           constraints.add_entries_local_to_global(u_indices, sparsity, false);
         }
     sparsity.compress();
-    displacement.solver.clear(); // it refers to the matrix of the last mesh
+    // The solver refers to the matrix and the rigid motions of the last
+    // mesh.
+    displacement.solver.clear();
     displacement.matrix.reinit(sparsity);
+    displacement.rigid_motions = NearNullSpace();
   }
 
 
@@ -318,33 +321,44 @@ namespace VPContact
     // space.
     NearNullSpace space;
     space.dofs_per_node = dim;
-    std::map<types::global_dof_index, Point<dim>> support_points;
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
     const Point<dim> centre
       = GridTools::compute_bounding_box(triangulation).center();
     const unsigned int n_modes = (dim == 2 ? 3 : 6);
     space.modes.assign(n_modes,
                        LA::MPI::Vector(displacement.owned, mpi_communicator));
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        ComponentMask mask(fe.n_components(), false);
-        mask.set(d, true);
-        for (const auto dof : DoFTools::extract_dofs(dof_handler, mask))
-          {
-            const Tensor<1, dim> x = support_points.at(dof) - centre;
-            space.modes[d](dof)    = 1.;
-            // Rotation about axis a: the velocity e_a x x, component d.
-            for (unsigned int a = 0; a < n_modes - dim; ++a)
-              {
-                const unsigned int axis = (dim == 2 ? 2 : a);
-                Tensor<1, 3>       e, y;
-                e[axis] = 1.;
-                for (unsigned int c = 0; c < dim; ++c)
-                  y[c] = x[c];
-                space.modes[dim + a](dof) = cross_product_3d(e, y)[d];
-              }
-          }
-      }
+    // One pass over the owned cells, which hold every owned node: the
+    // support points of a cell's shape functions are its quadrature points
+    // for the quadrature made of them. A node shared by several cells is
+    // written by each, with the same values.
+    FEValues<dim>                        fe_values(mapping,
+                            fe,
+                            Quadrature<dim>(fe.get_unit_support_points()),
+                            update_quadrature_points);
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell->get_dof_indices(indices);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            {
+              const unsigned int d = fe.system_to_component_index(i).first;
+              if (d >= dim || !displacement.owned.is_element(indices[i]))
+                continue;
+              const Tensor<1, dim> x = fe_values.quadrature_point(i) - centre;
+              space.modes[d](indices[i]) = 1.;
+              // Rotation about axis a: the velocity e_a x x, component d.
+              for (unsigned int a = 0; a < n_modes - dim; ++a)
+                {
+                  const unsigned int axis = (dim == 2 ? 2 : a);
+                  Tensor<1, 3>       e, y;
+                  e[axis] = 1.;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    y[c] = x[c];
+                  space.modes[dim + a](indices[i]) = cross_product_3d(e, y)[d];
+                }
+            }
+        }
     for (auto &mode : space.modes)
       mode.compress(VectorOperation::insert);
     return space;

@@ -30,9 +30,14 @@ namespace VPContact
                            + " overflows with the cell sizes of this mesh. "
                              "Rescale the units of the scene."));
     // The rigid motions are AMG's near null space; a factorization has no
-    // use for them, and they cost a pass over every node's support point.
-    const NearNullSpace near_null_space
-      = (displacement.solver.is_direct() ? NearNullSpace() : rigid_motions());
+    // use for them. They cost a pass over the cells, so they are computed
+    // once per mesh, not at every rebuild after the stick set changes.
+    const NearNullSpace none;
+    if (!displacement.solver.is_direct()
+        && displacement.rigid_motions.modes.empty())
+      displacement.rigid_motions = rigid_motions();
+    const NearNullSpace &near_null_space
+      = (displacement.solver.is_direct() ? none : displacement.rigid_motions);
     if (in_background)
       displacement.solver.initialize_in_background(displacement.matrix,
                                                    near_null_space);

@@ -57,9 +57,10 @@ namespace VPContact
     description() const;
 
     /**
-     * Build the preconditioner or factorization of @p matrix (which it
-     * refers to until clear() or the next initialize()); @p near_null_space
-     * are the rigid motions, for AMG.
+     * Build the preconditioner or factorization of @p matrix; @p
+     * near_null_space are the rigid motions, for AMG. With AMG it refers to
+     * both until clear() or the next initialize() (a rebuild after
+     * matrix_changed() uses them), with a factorization to the matrix.
      */
     void
     initialize(const LA::SparseMatrix &matrix,
@@ -194,8 +195,9 @@ namespace VPContact
     unsigned int iterations_before = 0;
     unsigned int iterations_after  = 0;
 
-    /// AMG's near null space, kept for a rebuild after matrix_changed().
-    NearNullSpace kept_null_space;
+    /// AMG's near null space of initialize(), for a rebuild after
+    /// matrix_changed() (the caller's, not a copy).
+    const NearNullSpace *null_space = nullptr;
 
     /// |b|, after checking that @p b is finite.
     static double

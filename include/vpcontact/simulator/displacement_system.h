@@ -37,6 +37,10 @@ namespace VPContact
     /// simulator's increment.
     LA::SparseMatrix matrix;
     LA::MPI::Vector  rhs;
+    /// The rigid motions at the nodes, AMG's near null space: computed at
+    /// the first build of AMG on a mesh and kept for the rebuilds after the
+    /// stick set changes (empty with a factorization, and after a new mesh).
+    NearNullSpace rigid_motions;
     /// Declared after the matrix, so destroyed before it: a factorization
     /// refers to the matrix.
     LinearSolver solver;
