@@ -20,7 +20,9 @@ namespace VPContact
       "the new step: 0 is the previous increment, 1 the linear and 2 the "
       "quadratic extrapolation. It changes the CG iteration count, not the "
       "solution; the quadratic one needs the fewest iterations on smooth "
-      "loadings.");
+      "loadings. An increment more than ten times larger or smaller than "
+      "the last (the first step from u_0 = 0 under a load) restarts the "
+      "history from it.");
     prm.leave_subsection();
   }
 
@@ -72,6 +74,20 @@ namespace VPContact
   {
     if (degree == 0)
       return;
+    // An increment more than ten times larger or smaller than the last is
+    // a jump, not a point of a smooth curve: the first step from the
+    // paper's u_0 = 0 under a load that is not zero at t = 0 reaches
+    // equilibrium in one step, and the next increments are about a
+    // hundredth of it. The history then restarts from the new increment
+    // alone. The rule reads only the recorded vectors, so a run resumed
+    // from a checkpoint applies it alike.
+    if (n_valid > 0)
+      {
+        const double size = increment.l2_norm();
+        const double last = history[0].l2_norm();
+        if (!(size <= jump_ratio * last && last <= jump_ratio * size))
+          n_valid = 0;
+      }
     // Shift the history by swapping the vectors, not copying them.
     history[2].swap(history[1]);
     history[1].swap(history[0]);

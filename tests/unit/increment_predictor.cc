@@ -3,7 +3,10 @@
 // reproduces increments that are themselves a polynomial of degree p in the
 // step number, exactly; a polynomial of higher degree is missed. Until p + 1
 // increments are recorded the degree is lowered, and degree 0 leaves the
-// previous increment as it is.
+// previous increment as it is. A jump (the first step's increment a hundred
+// times the next ones, as from the paper's u_0 = 0) restarts the history:
+// the later predictions use only the increments after it, and are exact
+// again from n = 4 on.
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/simulator/increment_predictor.h>
 
@@ -69,10 +72,13 @@ main(int argc, char **argv)
   const auto linear    = [](double n) { return 1. + 0.5 * n; };
   const auto quadratic = [](double n) { return 1. + 0.5 * n - 0.25 * n * n; };
   const auto cubic     = [](double n) { return n * n * n; };
+  const auto jump
+    = [](double n) { return n == 0 ? 0. : (n == 1 ? 100. : 1. + 0.5 * n); };
   check(0, "3", constant);
   check(0, "1 + n/2", linear);
   check(1, "1 + n/2", linear);
   check(1, "1 + n/2 - n^2/4", quadratic);
   check(2, "1 + n/2 - n^2/4", quadratic);
   check(2, "n^3", cubic);
+  check(2, "100 at n = 1, then 1 + n/2", jump);
 }

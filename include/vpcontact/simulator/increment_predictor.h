@@ -26,8 +26,9 @@ namespace VPContact
    * quadratic one 3 w_{n-1} - 3 w_{n-2} + w_{n-3}.
    *
    * Only the start vector changes: the solution is the same to the solver
-   * tolerance. Until enough steps are recorded (after setup, on a new mesh)
-   * the degree is lowered to what the history allows.
+   * tolerance. Until enough steps are recorded (after setup, on a new mesh,
+   * after a jump, see record()) the degree is lowered to what the history
+   * allows.
    */
   class IncrementPredictor
   {
@@ -47,7 +48,9 @@ namespace VPContact
     void
     predict(LA::MPI::Vector &increment) const;
 
-    /// Record the increment of the step just solved.
+    /// Record the increment of the step just solved; one more than
+    /// jump_ratio times larger or smaller than the last restarts the
+    /// history.
     void
     record(const LA::MPI::Vector &increment);
 
@@ -64,8 +67,9 @@ namespace VPContact
     set_n_recorded(const unsigned int n);
 
   private:
-    unsigned int                   degree  = 2;
-    unsigned int                   n_valid = 0;
+    static constexpr double        jump_ratio = 10.;
+    unsigned int                   degree     = 2;
+    unsigned int                   n_valid    = 0;
     std::array<LA::MPI::Vector, 3> history;
   };
 } // namespace VPContact
