@@ -234,6 +234,19 @@ namespace VPContact
 
 
   void
+  LinearSolver::rebuild()
+  {
+    // initialize() keeps a pointer to its near null space, so it must get
+    // the caller's object again, not a temporary copy of it: both
+    // operands below are lvalues, and the conditional copies neither.
+    static const NearNullSpace no_modes;
+    const NearNullSpace *const modes = null_space;
+    initialize(*matrix, modes ? *modes : no_modes);
+  }
+
+
+
+  void
   LinearSolver::matrix_changed()
   {
     changed_since_initialize = true;
@@ -329,7 +342,7 @@ namespace VPContact
                                      control.tolerance(),
                                      stale_iterations))
               return stale_iterations;
-            initialize(*matrix, null_space ? *null_space : NearNullSpace());
+            rebuild();
           }
         iterations_before = solver->solve(x, b, control);
         return stale_iterations + iterations_before;

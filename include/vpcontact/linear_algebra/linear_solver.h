@@ -130,6 +130,17 @@ namespace VPContact
                         const std::function<void()> &then = {});
 
     /**
+     * The near null space that a rebuild after matrix_changed() hands AMG:
+     * the caller's object given to initialize(), which must outlive the
+     * solver's use of it (nullptr for the other methods).
+     */
+    const NearNullSpace *
+    rebuild_near_null_space() const
+    {
+      return null_space;
+    }
+
+    /**
      * The matrix given to initialize() changed in place by a little (the
      * slip stiffness of a friction iteration). Later solves run deal.II's CG
      * on the changed matrix, preconditioned by the preconditioner or the
@@ -194,6 +205,10 @@ namespace VPContact
     /// Iterations of the last solve before and after the matrix changed.
     unsigned int iterations_before = 0;
     unsigned int iterations_after  = 0;
+
+    /// initialize() again with the matrix and near null space it has.
+    void
+    rebuild();
 
     /// AMG's near null space of initialize(), for a rebuild after
     /// matrix_changed() (the caller's, not a copy).
