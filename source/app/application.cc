@@ -241,6 +241,15 @@ namespace VPContact
         {
           return run_command_line(args, resume, communicator, file);
         }
+      // A negative or absurd array length is a bad_alloc too, but a fault
+      // of the program, not a lack of memory: it must not send the user
+      // looking for memory.
+      catch (const std::bad_array_new_length &)
+        {
+          error = "an array of impossible length was requested: this is a "
+                  "fault of the program, not a lack of memory. Please report "
+                  "it with the parameter file.";
+        }
       catch (const std::bad_alloc &)
         {
           error = out_of_memory_message(communicator);
