@@ -157,11 +157,20 @@ namespace VPContact
       }
 
       /**
-       * ML with the settings of step-42 for elasticity (few levels,
-       * two smoothing sweeps, a low aggregation threshold) and, for a
-       * vector problem, the rigid motions as its pre-computed null space:
-       * with the translations alone, the coarse levels cannot represent a
-       * rotation, and CG needs more iterations the finer the mesh.
+       * ML with the settings of step-42 for elasticity (few levels, a low
+       * aggregation threshold) and, for a vector problem, the rigid motions
+       * as its pre-computed null space: with the translations alone, the
+       * coarse levels cannot represent a rotation, and CG needs more
+       * iterations the finer the mesh.
+       *
+       * The smoother is a Chebyshev polynomial of the degree "smoother:
+       * sweeps". In 2D, degree one: a cycle then costs two matrix products
+       * fewer on the finest level, and CG needs more cycles, but fewer than
+       * would make up for them where the products are limited by memory
+       * traffic (meshes too large for the caches). In 3D, with rows of 81
+       * entries instead of 18, degree one loses more cycles than it saves
+       * products, and step-42's two sweeps stay. scripts/bench and
+       * scripts/bench_3d measure both.
        */
       void
       initialize_amg(const LA::SparseMatrix &matrix,
@@ -172,7 +181,7 @@ namespace VPContact
         data.higher_order_elements = false;
         if (near_null_space.dofs_per_node > 1)
           {
-            data.smoother_sweeps       = 2;
+            data.smoother_sweeps = (near_null_space.dofs_per_node == 2 ? 1 : 2);
             data.aggregation_threshold = 1e-2;
           }
         Teuchos::ParameterList              parameters;
