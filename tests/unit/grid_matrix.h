@@ -1,11 +1,14 @@
-// The test matrix of the factorization tests: the five-point Laplacian of
-// an m x m grid plus a shift of the diagonal, on one process.
+// The test matrix of the factorization and linear solver tests: the
+// five-point Laplacian of an m x m grid plus a shift of the diagonal, on one
+// process, and a LinearSolver of a given method for it.
 #ifndef vpcontact_tests_grid_matrix_h
 #define vpcontact_tests_grid_matrix_h
 
 #include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/linear_solver.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <vector>
 
@@ -44,6 +47,23 @@ namespace VPContact
       for (const unsigned int j : neighbours(i))
         K.set(i, j, i == j ? 4. + shift : -1.);
     K.compress(VectorOperation::insert);
+  }
+
+
+  /// A LinearSolver with Solver/Linear solver = @p method and Solver/Linear
+  /// algebra = Trilinos.
+  inline LinearSolver
+  grid_linear_solver(const std::string &method)
+  {
+    ParameterHandler prm;
+    LinearSolver::declare_parameters(prm);
+    prm.enter_subsection("Solver");
+    prm.set("Linear algebra", "Trilinos");
+    prm.set("Linear solver", method);
+    prm.leave_subsection();
+    LinearSolver solver;
+    solver.parse_parameters(prm);
+    return solver;
   }
 } // namespace VPContact
 

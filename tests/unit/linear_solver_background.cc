@@ -17,24 +17,6 @@
 
 using namespace VPContact;
 
-namespace
-{
-  LinearSolver
-  cholesky_solver()
-  {
-    ParameterHandler prm;
-    LinearSolver::declare_parameters(prm);
-    prm.enter_subsection("Solver");
-    prm.set("Linear solver", "Cholesky");
-    prm.leave_subsection();
-    LinearSolver solver;
-    solver.parse_parameters(prm);
-    return solver;
-  }
-} // namespace
-
-
-
 int
 main(int argc, char **argv)
 {
@@ -46,7 +28,7 @@ main(int argc, char **argv)
   {
     LA::SparseMatrix K;
     grid_matrix(m, 1., K);
-    LinearSolver solver = cholesky_solver();
+    LinearSolver solver = grid_linear_solver("Cholesky");
     solver.initialize_in_background(K, NearNullSpace());
     // Work beside the factorization: the right-hand side K e.
     LA::MPI::Vector e(all, MPI_COMM_WORLD), b(e), x(e);
@@ -64,7 +46,7 @@ main(int argc, char **argv)
   LA::SparseMatrix K;
   grid_matrix(m, -1., K);
   {
-    LinearSolver solver = cholesky_solver();
+    LinearSolver solver = grid_linear_solver("Cholesky");
     solver.initialize_in_background(K, NearNullSpace());
     LA::MPI::Vector b(all, MPI_COMM_WORLD), x(b);
     b = 1.;
@@ -83,7 +65,7 @@ main(int argc, char **argv)
       }
   }
   {
-    LinearSolver solver = cholesky_solver();
+    LinearSolver solver = grid_linear_solver("Cholesky");
     solver.initialize_in_background(K, NearNullSpace());
     solver.clear();
     std::printf("clear() after a failed background factorization: no "

@@ -20,19 +20,6 @@ using namespace VPContact;
 
 namespace
 {
-  LinearSolver
-  amg_solver()
-  {
-    ParameterHandler prm;
-    LinearSolver::declare_parameters(prm);
-    prm.enter_subsection("Solver");
-    prm.set("Linear algebra", "Trilinos");
-    prm.set("Linear solver", "CG with AMG");
-    prm.leave_subsection();
-    LinearSolver solver;
-    solver.parse_parameters(prm);
-    return solver;
-  }
 
 
 
@@ -88,7 +75,7 @@ main(int argc, char **argv)
   modes.modes.emplace_back(all, MPI_COMM_WORLD);
   modes.modes.back() = 1.;
 
-  LinearSolver solver = amg_solver();
+  LinearSolver solver = grid_linear_solver("CG with AMG");
   solver.initialize(K, modes);
   check_solve("built for the matrix", solver, K, all, modes);
 
