@@ -169,8 +169,7 @@ namespace VPContact
        * would make up for them where the products are limited by memory
        * traffic (meshes too large for the caches). In 3D, with rows of 81
        * entries instead of 18, degree one loses more cycles than it saves
-       * products, and step-42's two sweeps stay. scripts/bench and
-       * scripts/bench_3d measure both.
+       * products, and step-42's two sweeps stay (doc/design.md).
        */
       void
       initialize_amg(const LA::SparseMatrix &matrix,
