@@ -14,6 +14,17 @@
 
 namespace VPContact
 {
+  /// The rows of the grid matrix of an m x m grid, all on this process.
+  inline IndexSet
+  grid_rows(const unsigned int m)
+  {
+    IndexSet all(m * m);
+    all.add_range(0, m * m);
+    return all;
+  }
+
+
+
   /// The m^2 x m^2 matrix with diagonal 4 + @p shift and -1 for each grid
   /// neighbour: positive definite where shift > -4 + 4 cos(pi / (m + 1))
   /// (about -0.045 at m = 20), indefinite with a positive diagonal at
@@ -21,9 +32,8 @@ namespace VPContact
   inline void
   grid_matrix(const unsigned int m, const double shift, LA::SparseMatrix &K)
   {
-    const unsigned int n = m * m;
-    IndexSet           all(n);
-    all.add_range(0, n);
+    const unsigned int  n   = m * m;
+    const IndexSet      all = grid_rows(m);
     LA::SparsityPattern pattern(all, MPI_COMM_WORLD, 5);
     const auto          neighbours = [m](const unsigned int i) {
       std::vector<unsigned int> list{i};

@@ -21,9 +21,8 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int               m = 300;
-  IndexSet                         all(m * m);
-  all.add_range(0, m * m);
+  const unsigned int               m   = 300;
+  const IndexSet                   all = grid_rows(m);
 
   {
     LA::SparseMatrix K;

@@ -22,8 +22,7 @@ namespace
   {
     LA::SparseMatrix K;
     grid_matrix(m, 1., K);
-    IndexSet all(m * m);
-    all.add_range(0, m * m);
+    const IndexSet  all = grid_rows(m);
     LA::MPI::Vector e(all, MPI_COMM_WORLD), b(e), x(e);
     e = 1.;
     K.vmult(b, e);
