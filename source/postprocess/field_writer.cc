@@ -48,6 +48,37 @@ namespace VPContact
       tbb::task_arena one_thread(1);
       one_thread.execute(work);
     }
+
+    // Build (where FieldPatches::build is set), compress and write the
+    // piece; frees the patches (resets @p fields) as soon as write_vtu()
+    // has compressed them: the compressed piece is a fraction of their
+    // size, and its text is then copied out of the stream and into the file
+    // without them.
+    template <int dim>
+    void
+    write_piece_file(std::shared_ptr<FieldPatches<dim>> &fields,
+                     const std::string                  &filename,
+                     const DataOutBase::VtkFlags        &flags)
+    {
+      if (fields->build)
+        fields->build(fields->patches);
+      const std::string cell_data
+        = take_cell_data(fields->patches, fields->cell_names);
+      std::string vtu;
+      {
+        std::ostringstream stream;
+        DataOutBase::write_vtu(fields->patches,
+                               fields->names,
+                               fields->vector_ranges,
+                               flags,
+                               stream);
+        fields.reset();
+        vtu = stream.str();
+      }
+      write_file_atomically(filename, [&](std::ostream &out) {
+        write_with_cell_data(out, vtu, cell_data);
+      });
+    }
   } // namespace
 
 
@@ -85,20 +116,7 @@ namespace VPContact
       std::string problem;
       try
         {
-          if (fields->build)
-            fields->build(fields->patches);
-          const std::string cell_data
-            = take_cell_data(fields->patches, fields->cell_names);
-          std::ostringstream vtu;
-          DataOutBase::write_vtu(fields->patches,
-                                 fields->names,
-                                 fields->vector_ranges,
-                                 flags,
-                                 vtu);
-          write_file_atomically(filename,
-                                cell_data.empty() ?
-                                  vtu.str() :
-                                  insert_cell_data(vtu.str(), cell_data));
+          write_piece_file(fields, filename, flags);
         }
       catch (const ExceptionBase &e)
         {

@@ -40,15 +40,35 @@ namespace VPContact
   void
   write_file_atomically(const std::string &filename, const std::string &content)
   {
+    write_file_atomically(filename,
+                          [&content](std::ostream &out) { out << content; });
+  }
+
+
+
+  void
+  write_file_atomically(const std::string                         &filename,
+                        const std::function<void(std::ostream &)> &write)
+  {
     const std::string temporary = filename + ".tmp";
     {
-      std::ofstream out(temporary);
-      out << content;
-      out.close();
+      std::ofstream   out(temporary);
+      std::error_code ignored;
+      try
+        {
+          write(out);
+          out.close();
+        }
+      catch (...)
+        {
+          // The half-written temporary file is this program's own; the
+          // error that stopped the write is the one to report.
+          out.close();
+          std::filesystem::remove(temporary, ignored);
+          throw;
+        }
       if (!out.good())
         {
-          // The half-written temporary file is this program's own.
-          std::error_code ignored;
           std::filesystem::remove(temporary, ignored);
           AssertThrow(false,
                       ExcMessage("Cannot write the file " + temporary

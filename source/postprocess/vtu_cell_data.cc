@@ -98,13 +98,18 @@ namespace VPContact
 
 
 
-  std::string
-  insert_cell_data(const std::string &vtu, const std::string &cell_data)
+  void
+  write_with_cell_data(std::ostream      &out,
+                       const std::string &vtu,
+                       const std::string &cell_data)
   {
+    // In pieces, without a second copy of the piece in memory.
     const auto end = vtu.rfind("</Piece>");
     AssertThrow(end != std::string::npos,
                 ExcMessage("A .vtu piece without </Piece>."));
-    return vtu.substr(0, end) + cell_data + vtu.substr(end);
+    out.write(vtu.data(), end);
+    out << cell_data;
+    out.write(vtu.data() + end, vtu.size() - end);
   }
 
 

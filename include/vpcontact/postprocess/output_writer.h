@@ -12,6 +12,7 @@
 #include <deal.II/numerics/data_component_interpretation.h>
 
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <optional>
 #include <string>
@@ -202,6 +203,16 @@ namespace VPContact
   void
   write_file_atomically(const std::string &filename,
                         const std::string &content);
+
+  /**
+   * The same with the content written into the file's stream by @p write:
+   * for a large file, which then need not be held in memory as one string
+   * besides what it is made from. If @p write throws, the temporary file is
+   * removed and the exception passed on.
+   */
+  void
+  write_file_atomically(const std::string                         &filename,
+                        const std::function<void(std::ostream &)> &write);
 
   /**
    * Folders this program makes carry a marker file (@p marker, e.g.

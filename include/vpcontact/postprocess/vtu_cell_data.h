@@ -8,6 +8,7 @@
 
 #include <deal.II/base/data_out_base.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -28,10 +29,12 @@ namespace VPContact
   take_cell_data(std::vector<DataOutBase::Patch<dim, dim>> &patches,
                  const std::vector<std::string>            &names);
 
-  /// @p vtu, a piece written by write_vtu(), with @p cell_data inserted
-  /// into its <Piece>.
-  std::string
-  insert_cell_data(const std::string &vtu, const std::string &cell_data);
+  /// Write @p vtu, a piece written by write_vtu(), to @p out with
+  /// @p cell_data inserted into its <Piece>.
+  void
+  write_with_cell_data(std::ostream      &out,
+                       const std::string &vtu,
+                       const std::string &cell_data);
 
   /// @p pvtu, a record written by write_pvtu_record(), with a <PCellData>
   /// section naming the cell fields @p names.
