@@ -273,6 +273,7 @@ def program_run(a, size, algebra, solver, ranks, program, tag):
                                for n, (c, s, _) in sorted(phases.items())))
     for g in PHASES:
         row[g + "_ms"] = 1000 * groups[g] / a.steps
+    row.update(bench_report.untimed_in_other(row))
     if damage_ranks:
         row["damage_solve_min_ms"], row["damage_solve_max_ms"] = (
             1000 * x / a.steps for x in damage_ranks)

@@ -33,6 +33,15 @@ def slower_reasons(slower):
                  "exchange per vector) before the patches are built in the "
                  "background, and on 2 ranks, one core each, that copy is "
                  "not hidden.")
+    if " other " in named:
+        text += (" *Other* is the step's work outside the named phases, "
+                 "which the program's timer does not split: the damage "
+                 "step's right-hand side of the change, its first set "
+                 "decision and the nodes it frees ahead of the front, each "
+                 "a pass over all damage nodes (on several ranks with ghost "
+                 "exchanges and a product with the matrix), the "
+                 "displacement's start vector and update, and the friction "
+                 "sets.")
     return text + " Every phase and its decision is in [design.md](design.md)."
 
 
@@ -81,7 +90,7 @@ def goals(best, sizes, algebras, every=None):
         return fmt(worst) if worst else "–"
 
     share = {p: ratio(fastest.get(p + "_ms"), fastest["per_step_ms"])
-             for p in ("damage_solve", "solve", "assembly")}
+             for p in ("damage_solve", "solve", "assembly", "other")}
     # With Cholesky on one process the substitutions run beside the damage
     # step (LinearSolver::solve_in_background()), and the timer of the
     # solve holds only the wait for them.
@@ -122,7 +131,7 @@ def goals(best, sizes, algebras, every=None):
                 continue
             for phase, title in PHASE_TITLES:
                 now, then_ms = r.get(phase + "_ms"), e.get(phase + "_ms")
-                if now and then_ms and now > then_ms and phase != "other":
+                if now and then_ms and now > then_ms:
                     slower.append((then_ms / now, f"{config(r)} {title} "
                                    f"{fmt(then_ms / now)} against "
                                    f"{e['commit']}"))
@@ -133,9 +142,12 @@ def goals(best, sizes, algebras, every=None):
          f"({config(fastest)} / {short(peer_fastest)})",
          f"The step of {config(fastest)} is "
          f"{100 * share['damage_solve']:.0f} % damage solves, "
-         f"{100 * share['solve']:.0f} % {substitutions} and "
-         f"{100 * share['assembly']:.0f} % right-hand side assembly, "
-         "the rest the error estimate, the stress update, the damage "
+         f"{100 * share['solve']:.0f} % {substitutions}, "
+         f"{100 * share['assembly']:.0f} % right-hand side assembly and "
+         f"{100 * (share.get('other') or 0):.0f} % work outside the named "
+         "phases (*other*: the set decisions of the damage step between "
+         "its solves, the displacement's start vector and update, the "
+         "friction sets), the rest the error estimate, the stress update, the damage "
          "assembly and the output: no one phase holds the gap, and 0.2 "
          "would need every phase at about half its time. The damage "
          "solves run the program's region solver (CG over the free "
@@ -157,10 +169,13 @@ def goals(best, sizes, algebras, every=None):
          "As on 1 rank."),
         ("peak memory of CG + AMG at most the peer's, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["mem_all_mb"], g1["mem_all_mb"]))),
-         "The peak comes while ML builds its hierarchy: its product A P, "
-         "allocated at an estimated size and then copied, takes more heap "
-         "than the displacement matrix, and the hierarchy it keeps is "
-         "smaller (heaptrack). Besides, the mesh (one p4est tree per cell "
+         "The peak comes at the steps that write fields: deal.II's "
+         "DataOut builds a patch for every cell (its own copy of the "
+         "cell's vertices with every field on each) and write_vtu() a "
+         "table of them, on top of what the run holds between outputs; "
+         "without field output the peak comes while ML builds its "
+         "hierarchy (its product A P, allocated at an estimated size and "
+         "then copied). Besides, the mesh (one p4est tree per cell "
          "of the scene's coarse mesh), the fields at the quadrature "
          "points and the points and entry positions kept per cell stay "
          "for the whole run (the estimate's buffers only while it "
