@@ -273,7 +273,6 @@ def program_run(a, size, algebra, solver, ranks, program, tag):
                                for n, (c, s, _) in sorted(phases.items())))
     for g in PHASES:
         row[g + "_ms"] = 1000 * groups[g] / a.steps
-    row.update(bench_report.untimed_in_other(row))
     if damage_ranks:
         row["damage_solve_min_ms"], row["damage_solve_max_ms"] = (
             1000 * x / a.steps for x in damage_ranks)
@@ -470,6 +469,7 @@ def benchmark(a, info, runs):
                 row.update(program_run(a, size, algebra, solver, ranks,
                                        program, tag) if code == "vpcontact"
                            else peer_run(a, size, solver, ranks, tag))
+                row = bench_report.untimed_in_other(row)
                 rows.append(row)
                 shown = (f"{row['total_s']:.2f} s, {row['per_step_ms']:.1f}"
                          " ms per step" if row["status"] == "ok"
