@@ -242,7 +242,7 @@ namespace VPContact
                                const LA::MPI::Vector &assembled_residual)
   {
     ++last_iterations;
-    residual     = assembled_residual;
+    residual_exchange.copy(assembled_residual, residual);
     auto changes = active_set.update(residual,
                                      increment,
                                      previous,

@@ -93,15 +93,40 @@ namespace VPContact
   }
 
 
-  void
+  const GhostExchange::BlockParts &
+  GhostExchange::block_parts_for(const LA::MPI::BlockVector &owned,
+                                 const LA::MPI::Vector      &ghosted)
+  {
+    const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
+    const auto             known
+      = std::find_if(block_parts.begin(),
+                     block_parts.end(),
+                     [&](const std::unique_ptr<BlockParts> &p) {
+                       return p->ghosted_layout->DataPtr() == map.DataPtr();
+                     });
+    if (known != block_parts.end())
+      {
+        std::rotate(block_parts.begin(), known, known + 1);
+        return *block_parts.front();
+      }
+    if (block_parts.size() == max_pairs)
+      block_parts.pop_back();
+    block_parts.insert(block_parts.begin(), make_block_parts(owned, ghosted));
+    return *block_parts.front();
+  }
+
+
+
+  std::unique_ptr<GhostExchange::BlockParts>
   GhostExchange::make_block_parts(const LA::MPI::BlockVector &owned,
                                   const LA::MPI::Vector      &ghosted)
   {
+    auto parts = std::make_unique<BlockParts>();
     // The ghosted vector's global indices, in the order of its entries,
     // split at the blocks' bounds; each part must be contiguous.
     const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
-    block_parts.first_entry.assign(owned.n_blocks() + 1, 0);
-    block_parts.layouts.clear();
+    parts->first_entry.assign(owned.n_blocks() + 1, 0);
+    parts->layouts.clear();
     types::global_dof_index block_start = 0;
     std::size_t             entry       = 0;
     const std::size_t       n_entries   = map.NumMyElements();
@@ -109,7 +134,7 @@ namespace VPContact
       {
         const types::global_dof_index block_end
           = block_start + owned.block(b).size();
-        block_parts.first_entry[b] = entry;
+        parts->first_entry[b] = entry;
         std::vector<types::global_dof_index> indices;
         for (; entry < n_entries
                && static_cast<types::global_dof_index>(map.GID64(entry))
@@ -130,13 +155,14 @@ namespace VPContact
         part.compress();
         // Overlapping: the layout lists the entries in the order of the
         // set, the ghosted vector's order.
-        block_parts.layouts.push_back(std::make_unique<Epetra_Map>(
+        parts->layouts.push_back(std::make_unique<Epetra_Map>(
           part.make_trilinos_map(owned.block(b).get_mpi_communicator(), true)));
         block_start = block_end;
       }
     AssertThrow(entry == n_entries, ExcInternalError());
-    block_parts.first_entry.back() = entry;
-    block_parts.ghosted_layout     = std::make_unique<Epetra_BlockMap>(map);
+    parts->first_entry.back() = entry;
+    parts->ghosted_layout     = std::make_unique<Epetra_BlockMap>(map);
+    return parts;
   }
 
 
@@ -146,17 +172,14 @@ namespace VPContact
                       LA::MPI::Vector            &ghosted)
   {
     AssertDimension(owned.size(), ghosted.size());
-    const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
-    if (!block_parts.ghosted_layout
-        || block_parts.ghosted_layout->DataPtr() != map.DataPtr())
-      make_block_parts(owned, ghosted);
+    const BlockParts &parts = block_parts_for(owned, ghosted);
     // Each block into a view of its part of the ghosted entries: a copy
     // where the layouts are the same (one rank), else an import kept as
     // for two vectors.
     for (unsigned int b = 0; b < owned.n_blocks(); ++b)
       {
-        double *const part = ghosted.begin() + block_parts.first_entry[b];
-        const Epetra_BlockMap &layout = *block_parts.layouts[b];
+        double *const          part   = ghosted.begin() + parts.first_entry[b];
+        const Epetra_BlockMap &layout = *parts.layouts[b];
         const LayoutPair      &pair
           = pair_for(owned.block(b).trilinos_vector().Map(), layout);
         if (pair.same_layouts)

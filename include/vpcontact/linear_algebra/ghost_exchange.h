@@ -108,15 +108,25 @@ namespace VPContact
       std::vector<std::size_t>                      first_entry;
       std::vector<std::unique_ptr<Epetra_BlockMap>> layouts;
     };
-    BlockParts block_parts;
 
-    void
+    /// The parts for this ghosted vector's layout: kept ones, or new ones
+    /// that replace the least recently used when max_pairs are kept. The
+    /// displacement copies its increment and its solution, two ghosted
+    /// vectors of layouts of their own, in turn within every step; with
+    /// only the last parts kept, each alternation walked every index and
+    /// built new layouts, and with them new imports.
+    const BlockParts &
+    block_parts_for(const LA::MPI::BlockVector &owned,
+                    const LA::MPI::Vector      &ghosted);
+
+    static std::unique_ptr<BlockParts>
     make_block_parts(const LA::MPI::BlockVector &owned,
                      const LA::MPI::Vector      &ghosted);
 
-    /// The pairs, the most recently used first.
+    /// The pairs and the block parts, the most recently used first.
     std::vector<std::unique_ptr<LayoutPair>> pairs;
-    static constexpr unsigned int            max_pairs = 4;
+    std::vector<std::unique_ptr<BlockParts>> block_parts;
+    static constexpr unsigned int            max_pairs = 8;
   };
 } // namespace VPContact
 
