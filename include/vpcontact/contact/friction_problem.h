@@ -193,9 +193,9 @@ namespace VPContact
     std::vector<CellIterator> contact_cells;
     /// A ghosted copy of r.
     LA::MPI::Vector residual;
-    /// assembled residual -> residual, with the import built once (deal.II's
-    /// assignment builds one at every call: on 2 ranks at 512^2 cells that
-    /// took most of the friction sets' time).
+    /// Copies the assembled residual into the ghosted one with an import
+    /// built once: deal.II's assignment builds a new one at every call,
+    /// which walks every index of both layouts.
     GhostExchange residual_exchange;
     /// The fingerprints of the sets at the start of the step and after
     /// each update(), to find a cycle.
