@@ -4,6 +4,7 @@
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/exceptions.h>
 
 #include <algorithm>
@@ -109,7 +110,7 @@ namespace VPContact
         std::rotate(block_parts.begin(), known, known + 1);
         return *block_parts.front();
       }
-    if (block_parts.size() == max_pairs)
+    if (block_parts.size() == max_block_parts)
       block_parts.pop_back();
     block_parts.insert(block_parts.begin(), make_block_parts(owned, ghosted));
     return *block_parts.front();
@@ -153,10 +154,16 @@ namespace VPContact
         IndexSet part(owned.block(b).size());
         part.add_indices(indices.begin(), indices.end());
         part.compress();
-        // Overlapping: the layout lists the entries in the order of the
-        // set, the ghosted vector's order.
+        // Overlapping on several ranks: the layout lists the entries in
+        // the order of the set, the ghosted vector's order. On one rank the
+        // part is the whole block, whose linear layout stores no list of
+        // its indices (a list for every block of every ghosted layout kept
+        // would add to the run's peak memory).
+        const MPI_Comm communicator = owned.block(b).get_mpi_communicator();
         parts->layouts.push_back(std::make_unique<Epetra_Map>(
-          part.make_trilinos_map(owned.block(b).get_mpi_communicator(), true)));
+          part.make_trilinos_map(communicator,
+                                 Utilities::MPI::n_mpi_processes(communicator)
+                                   > 1)));
         block_start = block_end;
       }
     AssertThrow(entry == n_entries, ExcInternalError());

@@ -110,7 +110,9 @@ namespace VPContact
     };
 
     /// The parts for this ghosted vector's layout: kept ones, or new ones
-    /// that replace the least recently used when max_pairs are kept. The
+    /// that replace the least recently used when max_block_parts are kept
+    /// (each holds its layouts, and with them the old mesh's until it is
+    /// replaced). The
     /// displacement copies its increment and its solution, two ghosted
     /// vectors of layouts of their own, in turn within every step; with
     /// only the last parts kept, each alternation walked every index and
@@ -126,7 +128,8 @@ namespace VPContact
     /// The pairs and the block parts, the most recently used first.
     std::vector<std::unique_ptr<LayoutPair>> pairs;
     std::vector<std::unique_ptr<BlockParts>> block_parts;
-    static constexpr unsigned int            max_pairs = 8;
+    static constexpr unsigned int            max_pairs       = 4;
+    static constexpr unsigned int            max_block_parts = 2;
   };
 } // namespace VPContact
 
