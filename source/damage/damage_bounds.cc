@@ -25,6 +25,8 @@ namespace VPContact
     owned.clear();
     ghosted_position.clear();
     owned_position.clear();
+    node_of_owned.assign(locally_owned_dofs.n_elements(), -1);
+    ghost_nodes.clear();
     const Epetra_BlockMap &ghosted_map = lumped_mass.trilinos_vector().Map();
     n_ghosted                          = ghosted_map.NumMyElements();
     for (const auto dof : damage_dofs)
@@ -36,6 +38,10 @@ namespace VPContact
           ghosted_map.LID(static_cast<TrilinosWrappers::types::int_type>(dof)));
         owned_position.push_back(
           owned.back() ? locally_owned_dofs.index_within_set(dof) : 0);
+        if (owned.back())
+          node_of_owned[owned_position.back()] = dofs.size() - 1;
+        else
+          ghost_nodes.push_back(dofs.size() - 1);
       }
     status.assign(dofs.size(), BoundStatus::free);
     upper_at_start.assign(dofs.size(), false);
@@ -75,35 +81,120 @@ namespace VPContact
 
 
 
-  unsigned int
-  DamageBounds::update(const LA::MPI::Vector &residual,
-                       const LA::MPI::Vector &damage,
-                       const double           time_step)
+  void
+  DamageBounds::held_changes_on(const std::vector<unsigned int> &work,
+                                const LA::MPI::Vector           &old_damage,
+                                LA::MPI::Vector                 &change,
+                                std::vector<unsigned int>       &held,
+                                std::vector<unsigned int>       &free) const
+  {
+    const double *old_values    = old_damage.begin();
+    double       *change_values = change.begin();
+    for (const unsigned int position : work)
+      {
+        const int i             = node_of_owned[position];
+        change_values[position] = 0.;
+        if (i >= 0 && status[i] == BoundStatus::free)
+          free.push_back(position);
+        else
+          {
+            held.push_back(position);
+            if (i >= 0)
+              change_values[position]
+                = (status[i] == BoundStatus::upper ? 1. : 0.)
+                  - old_values[position];
+          }
+      }
+  }
+
+
+
+  std::vector<unsigned int>
+  DamageBounds::moving_positions(const LA::MPI::Vector &old_damage) const
+  {
+    const double             *old_values = old_damage.begin();
+    std::vector<unsigned int> moving;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (owned[i])
+        {
+          const double old = old_values[owned_position[i]];
+          if (status[i] == BoundStatus::free
+              || (status[i] == BoundStatus::upper && old != 1.)
+              || (status[i] == BoundStatus::lower && old != 0.))
+            moving.push_back(owned_position[i]);
+        }
+    return moving;
+  }
+
+
+
+  void
+  DamageBounds::check_layout(const LA::MPI::Vector &residual,
+                             const LA::MPI::Vector &damage) const
   {
     AssertThrow(residual.trilinos_vector().Map().NumMyElements() == n_ghosted
                   && damage.trilinos_vector().Map().NumMyElements()
                        == n_ghosted,
                 ExcInternalError("DamageBounds::update() needs ghosted "
                                  "vectors laid out like the lumped mass."));
-    const double *residual_values = residual.begin();
-    const double *damage_values   = damage.begin();
-    unsigned int  n_changed       = 0;
+  }
+
+
+
+  bool
+  DamageBounds::decide(const unsigned int i,
+                       const double      *residual_values,
+                       const double      *damage_values,
+                       const double       time_step)
+  {
+    // Weakly active nodes: a hysteresis of 1e-9 in units of zeta.
+    constexpr double   hysteresis = 1e-9;
+    const double       c = (scale.empty() ? mass[i] / time_step : scale[i]);
+    const unsigned int position = ghosted_position[i];
+    const BoundStatus  next     = box_decision(residual_values[position],
+                                          damage_values[position],
+                                          c,
+                                          status[i],
+                                          hysteresis * c);
+    const bool         changed  = (next != status[i]);
+    status[i]                   = next;
+    return changed;
+  }
+
+
+
+  unsigned int
+  DamageBounds::update(const LA::MPI::Vector &residual,
+                       const LA::MPI::Vector &damage,
+                       const double           time_step)
+  {
+    check_layout(residual, damage);
+    unsigned int n_changed = 0;
     for (unsigned int i = 0; i < dofs.size(); ++i)
-      {
-        // Weakly active nodes: a hysteresis of 1e-9 in units of zeta.
-        constexpr double   hysteresis = 1e-9;
-        const double       c = (scale.empty() ? mass[i] / time_step : scale[i]);
-        const unsigned int position = ghosted_position[i];
-        const BoundStatus  next     = box_decision(residual_values[position],
-                                              damage_values[position],
-                                              c,
-                                              status[i],
-                                              hysteresis * c);
-        if (owned[i] && next != status[i])
-          ++n_changed;
-        status[i] = next;
-      }
+      n_changed
+        += (decide(i, residual.begin(), damage.begin(), time_step) && owned[i]);
     return Utilities::MPI::sum(n_changed, communicator);
+  }
+
+
+
+  unsigned int
+  DamageBounds::update_on(const std::vector<unsigned int> &work,
+                          const LA::MPI::Vector           &residual,
+                          const LA::MPI::Vector           &damage,
+                          const double                     time_step,
+                          std::vector<unsigned int>       &changed)
+  {
+    check_layout(residual, damage);
+    changed.clear();
+    for (const unsigned int position : work)
+      if (const int i = node_of_owned[position];
+          i >= 0 && decide(i, residual.begin(), damage.begin(), time_step))
+        changed.push_back(position);
+    for (const unsigned int i : ghost_nodes)
+      decide(i, residual.begin(), damage.begin(), time_step);
+    return Utilities::MPI::sum(static_cast<unsigned int>(changed.size()),
+                               communicator);
   }
 
 

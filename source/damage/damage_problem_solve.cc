@@ -124,6 +124,13 @@ namespace VPContact
     // meshes, where the front moves by several rings in a step.
     bounds.free_ahead_of_front(system.matrix(), rings_ahead);
 
+    // From here on the passes between the solves visit the nodes the solves
+    // can change (see DamageWorkSet), where the solver takes the free set
+    // as a list.
+    const bool on_work_set = system.solves_on_free_nodes();
+    if (on_work_set)
+      start_work_set(step_rhs);
+
     // While the sets still change, the solves that find them need not be
     // exact: their multipliers only decide the next sets. The first few
     // stop at a relative residual of 1e-4 (or the Solver tolerance, if
@@ -146,7 +153,9 @@ namespace VPContact
       {
         const double tolerance = (exact || iteration > 6 ? tight : loose);
         ++last_iterations;
-        const unsigned int n_changed = solve_with_sets(step_rhs, tolerance);
+        const unsigned int n_changed
+          = (on_work_set ? solve_on_work_set(step_rhs, tolerance) :
+                           solve_with_sets(step_rhs, tolerance));
         if (n_changed == 0 && tolerance == tight)
           return true;
         exact = (n_changed <= few);
@@ -197,6 +206,109 @@ namespace VPContact
     residual_owned.sadd(-1., 1., step_rhs);
     residual_exchange.copy(residual_owned, residual);
     return bounds.update(residual, damage, time.step_size());
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::start_work_set(const LA::MPI::Vector &step_rhs)
+  {
+    // Outside the work set the vectors the solves write hold what they
+    // would hold after a solve over all nodes: no change, zeta_{n-1}, and
+    // the residual b - K zeta_{n-1} (the ghosted damage and residual
+    // already do, from solve_step() and the first decision).
+    copy_owned_values(old_damage, damage_owned);
+    copy_owned_values(step_rhs, residual_owned);
+    bound_change  = 0.;
+    serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
+    AssertThrow(!serial_layout
+                  || static_cast<std::size_t>(
+                       damage.trilinos_vector().Map().NumMyElements())
+                       == damage_owned.locally_owned_size(),
+                ExcInternalError());
+    const SupportProduct &product = system.support();
+    work.clear(damage_owned.locally_owned_size());
+    work.add_neighbourhoods(bounds.moving_positions(old_damage), product);
+    work.add_neighbourhoods(system.hanging_node_positions(), product);
+    work.add(product.rows_of_ghosts());
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageProblem<dim>::solve_on_work_set(const LA::MPI::Vector &step_rhs,
+                                        const double           tolerance)
+  {
+    TimerOutput::Scope t(timer, "Damage solve");
+
+    // solve_with_sets() on the positions of the work set: the same values
+    // there, in the same order, and none changes elsewhere.
+    const std::vector<unsigned int> &rows = work.positions();
+    held.clear();
+    free_positions.clear();
+    bounds.held_changes_on(rows,
+                           old_damage,
+                           bound_change,
+                           held,
+                           free_positions);
+    system.vmult_on_rows(solve_rhs, bound_change, rows);
+    const double *const step_values = step_rhs.begin();
+    double *const       rhs         = solve_rhs.begin();
+    double *const       delta       = change.begin();
+    for (const unsigned int i : rows)
+      rhs[i] = step_values[i] - rhs[i];
+    for (const unsigned int i : held)
+      rhs[i] = delta[i] = 0.;
+    system.solve_free(solve_rhs,
+                      change,
+                      free_positions,
+                      tolerance,
+                      linear_solver.iteration_limit());
+    const double *const bound_values = bound_change.begin();
+    for (const unsigned int i : rows)
+      delta[i] += bound_values[i];
+    system.distribute_hanging_nodes(change);
+    const double *const old_values = old_damage.begin();
+    double *const       zeta       = damage_owned.begin();
+    for (const unsigned int i : rows)
+      zeta[i] = old_values[i] + delta[i];
+    copy_on_work_set(damage_owned, damage_exchange, damage);
+
+    system.vmult_on_rows(residual_owned, change, rows);
+    double *const multiplier = residual_owned.begin();
+    for (const unsigned int i : rows)
+      multiplier[i] = step_values[i] - multiplier[i];
+    copy_on_work_set(residual_owned, residual_exchange, residual);
+    const unsigned int n_changed = bounds.update_on(rows,
+                                                    residual,
+                                                    damage,
+                                                    time.step_size(),
+                                                    changed_positions);
+    work.add_neighbourhoods(changed_positions, system.support());
+    return n_changed;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageProblem<dim>::copy_on_work_set(const LA::MPI::Vector &owned,
+                                       GhostExchange         &exchange,
+                                       LA::MPI::Vector       &ghosted) const
+  {
+    // On one rank the ghosted vector has the owned layout; on several its
+    // ghosts come from the other ranks, through the whole exchange.
+    if (!serial_layout)
+      {
+        exchange.copy(owned, ghosted);
+        return;
+      }
+    const double *const from = owned.begin();
+    double *const       to   = ghosted.begin();
+    for (const unsigned int i : work.positions())
+      to[i] = from[i];
   }
 
 

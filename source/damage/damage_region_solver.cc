@@ -424,19 +424,19 @@ namespace VPContact
 
 
   void
-  DamageRegionSolver::select_free_nodes(const std::vector<unsigned int> &held)
+  DamageRegionSolver::take_free_nodes(const std::vector<unsigned int> &free)
   {
-    std::fill(is_free.begin(), is_free.end(), true);
-    for (const unsigned int i : held)
+    // is_free marks the free set of the last solve: unmark it, mark the new
+    // one, at the cost of the two sets rather than of the mesh.
+    for (const unsigned int i : free_nodes)
       is_free[i] = false;
-    free_nodes.clear();
+    free_nodes   = free;
     bool covered = region_valid;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      if (is_free[i])
-        {
-          free_nodes.push_back(i);
-          covered = covered && region_index[i] >= 0;
-        }
+    for (const unsigned int i : free_nodes)
+      {
+        is_free[i] = true;
+        covered    = covered && region_index[i] >= 0;
+      }
     if (!covered)
       build_region(2);
   }
@@ -491,7 +491,26 @@ namespace VPContact
                             const double                     tolerance,
                             const unsigned int               max_iterations)
   {
-    select_free_nodes(held);
+    std::vector<bool> is_held(n_owned, false);
+    for (const unsigned int i : held)
+      is_held[i] = true;
+    std::vector<unsigned int> free;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (!is_held[i])
+        free.push_back(i);
+    return solve_free(b_vector, x_vector, free, tolerance, max_iterations);
+  }
+
+
+
+  unsigned int
+  DamageRegionSolver::solve_free(const LA::MPI::Vector           &b_vector,
+                                 LA::MPI::Vector                 &x_vector,
+                                 const std::vector<unsigned int> &free,
+                                 const double                     tolerance,
+                                 const unsigned int max_iterations)
+  {
+    take_free_nodes(free);
     if (kind == Preconditioner::diagonal)
       return solve_eisenstat(b_vector, x_vector, tolerance, max_iterations);
     const double *b = b_vector.begin();

@@ -393,6 +393,26 @@ namespace VPContact
 
   template <int dim>
   void
+  DamageSystem<dim>::vmult_on_rows(LA::MPI::Vector                 &y,
+                                   const LA::MPI::Vector           &x,
+                                   const std::vector<unsigned int> &rows)
+  {
+    support_product.vmult_on(y, x, rows);
+  }
+
+
+
+  template <int dim>
+  const SupportProduct &
+  DamageSystem<dim>::support() const
+  {
+    return support_product;
+  }
+
+
+
+  template <int dim>
+  void
   DamageSystem<dim>::begin_step()
   {
     region_solver.begin_step();
@@ -453,18 +473,57 @@ namespace VPContact
       }
     catch (const SolverControl::NoConvergence &e)
       {
-        // Every rank gets here in the same iteration (the residual is
-        // global).
-        AssertThrow(false,
-                    ExcMessage("CG did not converge for the damage: after "
-                               + std::to_string(e.last_step)
-                               + " iterations the residual is "
-                               + to_text(e.last_residual) + " > "
-                               + to_text(control.tolerance())
-                               + ". Raise Solver/Maximum linear iterations or "
-                                 "loosen Solver/Relative tolerance."));
+        throw_no_convergence(e, control.tolerance());
       }
     return 0;
+  }
+
+
+
+  template <int dim>
+  bool
+  DamageSystem<dim>::solves_on_free_nodes() const
+  {
+    return use_region_solver && !use_snes_vi;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  DamageSystem<dim>::solve_free(const LA::MPI::Vector           &b,
+                                LA::MPI::Vector                 &x,
+                                const std::vector<unsigned int> &free,
+                                const double                     tolerance,
+                                const unsigned int               max_iterations)
+  {
+    Assert(solves_on_free_nodes(), ExcInternalError());
+    try
+      {
+        return region_solver.solve_free(b, x, free, tolerance, max_iterations);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        throw_no_convergence(e, 0.);
+      }
+    return 0;
+  }
+
+
+
+  template <int dim>
+  void
+  DamageSystem<dim>::throw_no_convergence(const SolverControl::NoConvergence &e,
+                                          const double target)
+  {
+    // Every rank gets here in the same iteration (the residual is global).
+    AssertThrow(false,
+                ExcMessage("CG did not converge for the damage: after "
+                           + std::to_string(e.last_step)
+                           + " iterations the residual is "
+                           + to_text(e.last_residual) + " > " + to_text(target)
+                           + ". Raise Solver/Maximum linear iterations or "
+                             "loosen Solver/Relative tolerance."));
   }
 
 

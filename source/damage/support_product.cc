@@ -103,14 +103,37 @@ namespace VPContact
     double            *y_values = y.begin();
     const unsigned int n_owned  = ghosted_of_owned.size();
     std::fill(y_values, y_values + n_owned, 0.);
-    const auto add_column = [&](const unsigned int g, const double x_g) {
-      for (unsigned int e = column_start[g]; e < column_start[g + 1]; ++e)
-        y_values[row[e]] += value[e] * x_g;
-    };
     const double *x_values = x.begin();
     for (unsigned int j = 0; j < n_owned; ++j)
       if (x_values[j] != 0.)
-        add_column(ghosted_of_owned[j], x_values[j]);
+        add_column(y_values, ghosted_of_owned[j], x_values[j]);
+    add_ghost_columns(y_values, x);
+  }
+
+
+
+  void
+  SupportProduct::vmult_on(LA::MPI::Vector                 &y,
+                           const LA::MPI::Vector           &x,
+                           const std::vector<unsigned int> &rows)
+  {
+    // The same columns in the same order as vmult(): x vanishes at the
+    // owned positions outside rows.
+    double *y_values = y.begin();
+    for (const unsigned int i : rows)
+      y_values[i] = 0.;
+    const double *x_values = x.begin();
+    for (const unsigned int j : rows)
+      if (x_values[j] != 0.)
+        add_column(y_values, ghosted_of_owned[j], x_values[j]);
+    add_ghost_columns(y_values, x);
+  }
+
+
+
+  void
+  SupportProduct::add_ghost_columns(double *y_values, const LA::MPI::Vector &x)
+  {
     if (serial_layout)
       return;
     const int error = x_ghosted.trilinos_vector().Import(x.trilinos_vector(),
@@ -120,6 +143,29 @@ namespace VPContact
     const double *ghosted_values = x_ghosted.begin();
     for (const unsigned int g : ghost_positions)
       if (ghosted_values[g] != 0.)
-        add_column(g, ghosted_values[g]);
+        add_column(y_values, g, ghosted_values[g]);
+  }
+
+
+
+  ArrayView<const unsigned int>
+  SupportProduct::rows_of_owned(const unsigned int position) const
+  {
+    const unsigned int g = ghosted_of_owned[position];
+    return {row.data() + column_start[g],
+            column_start[g + 1] - column_start[g]};
+  }
+
+
+
+  std::vector<unsigned int>
+  SupportProduct::rows_of_ghosts() const
+  {
+    std::vector<unsigned int> rows;
+    for (const unsigned int g : ghost_positions)
+      rows.insert(rows.end(),
+                  row.begin() + column_start[g],
+                  row.begin() + column_start[g + 1]);
+    return rows;
   }
 } // namespace VPContact

@@ -96,6 +96,28 @@ namespace VPContact
                  LA::MPI::Vector           &change) const;
 
     /**
+     * held_changes() for the owned positions @p work alone (ascending; see
+     * DamageWorkSet): @p change gets the change that puts a node of an
+     * active set on its bound and 0 at the other positions of @p work; the
+     * positions of the free nodes go to @p free, the others (the active
+     * sets and positions without bounds, the hanging nodes) to @p held.
+     */
+    void
+    held_changes_on(const std::vector<unsigned int> &work,
+                    const LA::MPI::Vector           &old_damage,
+                    LA::MPI::Vector                 &change,
+                    std::vector<unsigned int>       &held,
+                    std::vector<unsigned int>       &free) const;
+
+    /**
+     * The owned positions of the nodes whose change is not zero in a solve
+     * with the present sets: the free nodes, and the nodes of an active
+     * set whose old value @p old_damage (owned) is not on the bound.
+     */
+    std::vector<unsigned int>
+    moving_positions(const LA::MPI::Vector &old_damage) const;
+
+    /**
      * The scale c_i of the complementarity test of update(): the ghosted
      * @p diagonal of the damage matrix, K_ii = m_i/k + kappa A_ii (laid out
      * like the lumped mass). Without it, update() takes c_i = m_i/k, which
@@ -117,6 +139,21 @@ namespace VPContact
     update(const LA::MPI::Vector &residual,
            const LA::MPI::Vector &damage,
            const double           time_step);
+
+    /**
+     * update() on the owned nodes at the positions @p work (see
+     * DamageWorkSet) and on every ghost node. The other owned nodes keep
+     * their set: the caller guarantees that their residual and damage are
+     * those of an earlier update() in the same step, whose decision
+     * box_decision() repeats. The owned positions of the nodes that changed
+     * set go to @p changed.
+     */
+    unsigned int
+    update_on(const std::vector<unsigned int> &work,
+              const LA::MPI::Vector           &residual,
+              const LA::MPI::Vector           &damage,
+              const double                     time_step,
+              std::vector<unsigned int>       &changed);
 
     /**
      * The motion of the front of the upper set (ζ = 1) over a step, in
@@ -174,6 +211,19 @@ namespace VPContact
     read_state(const LA::MPI::Vector &state, const bool interpolated = false);
 
   private:
+    /// The set of node @p i from the ghosted @p residual and @p damage
+    /// values; true if it changed.
+    bool
+    decide(const unsigned int i,
+           const double      *residual_values,
+           const double      *damage_values,
+           const double       time_step);
+
+    /// Check that @p residual and @p damage are laid out as setup() says.
+    void
+    check_layout(const LA::MPI::Vector &residual,
+                 const LA::MPI::Vector &damage) const;
+
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  mass;
     /// c_i of set_complementarity_scale() (empty: m_i / k).
@@ -184,6 +234,10 @@ namespace VPContact
     /// entries (owned nodes only).
     std::vector<unsigned int> ghosted_position;
     std::vector<unsigned int> owned_position;
+    /// The node at each owned position (-1: no bounds, a hanging node), and
+    /// the nodes that are not owned.
+    std::vector<int>          node_of_owned;
+    std::vector<unsigned int> ghost_nodes;
     int                       n_ghosted = 0;
     std::vector<BoundStatus>  status;
     std::vector<bool>         upper_at_start;

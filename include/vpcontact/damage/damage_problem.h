@@ -7,6 +7,7 @@
 #include <vpcontact/damage/damage_bounds.h>
 #include <vpcontact/damage/damage_model.h>
 #include <vpcontact/damage/damage_system.h>
+#include <vpcontact/damage/damage_work_set.h>
 #include <vpcontact/fe/quadrature_history.h>
 #include <vpcontact/fe/scalar_node_space.h>
 #include <vpcontact/linear_algebra/ghost_exchange.h>
@@ -184,6 +185,18 @@ namespace VPContact
     find_sets_fast(const LA::MPI::Vector &step_rhs);
     unsigned int
     solve_with_sets(const LA::MPI::Vector &step_rhs, const double tolerance);
+    /// The work set of the step's solves after its first decision, and the
+    /// vectors outside it (see DamageWorkSet).
+    void
+    start_work_set(const LA::MPI::Vector &step_rhs);
+    /// solve_with_sets() with its passes over the work set alone.
+    unsigned int
+    solve_on_work_set(const LA::MPI::Vector &step_rhs, const double tolerance);
+    /// @p ghosted = @p owned on the work set (one rank) or everywhere.
+    void
+    copy_on_work_set(const LA::MPI::Vector &owned,
+                     GhostExchange         &exchange,
+                     LA::MPI::Vector       &ghosted) const;
 
     const DamageModel<dim>   &model;
     const TimeDiscretization &time;
@@ -212,6 +225,12 @@ namespace VPContact
     /// the size of the mesh in every solve costs its page faults.
     std::vector<unsigned int> held;
     LA::MPI::Vector           bound_change;
+    /// The nodes the solves of the step can change, and of a solve on them
+    /// the free nodes and those that changed set (owned positions).
+    DamageWorkSet             work;
+    std::vector<unsigned int> free_positions;
+    std::vector<unsigned int> changed_positions;
+    bool                      serial_layout = true;
     /// b = M_L zeta_{n-1}/k + (phi_{n-1}, psi): as assembled (with ghost
     /// entries) and owned.
     LA::MPI::Vector load_assembly;

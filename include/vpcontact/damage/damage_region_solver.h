@@ -105,15 +105,27 @@ namespace VPContact
           const double                     tolerance,
           const unsigned int               max_iterations);
 
+    /**
+     * solve() with the free nodes given: @p free, the ascending owned
+     * positions of F. @p b and @p x (the start vector) are read on F
+     * alone and x is written there alone.
+     */
+    unsigned int
+    solve_free(const LA::MPI::Vector           &b,
+               LA::MPI::Vector                 &x,
+               const std::vector<unsigned int> &free,
+               const double                     tolerance,
+               const unsigned int               max_iterations);
+
     /// How often the region was built on this rank (for the tests).
     unsigned int
     n_region_builds() const;
 
   private:
-    /// The free set of a solve (owned positions not in @p held); builds
-    /// the region if it does not hold them.
+    /// The free set @p free (ascending owned positions); builds the region
+    /// if it does not hold them.
     void
-    select_free_nodes(const std::vector<unsigned int> &held);
+    take_free_nodes(const std::vector<unsigned int> &free);
 
     /// R = F and @p rings rings of neighbours around it; (M)IC(0) of K_RR.
     void

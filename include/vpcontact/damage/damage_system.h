@@ -136,6 +136,17 @@ namespace VPContact
     void
     vmult_on_support(LA::MPI::Vector &y, const LA::MPI::Vector &x);
 
+    /// vmult_on_support() on the owned positions @p rows alone (see
+    /// SupportProduct::vmult_on()).
+    void
+    vmult_on_rows(LA::MPI::Vector                 &y,
+                  const LA::MPI::Vector           &x,
+                  const std::vector<unsigned int> &rows);
+
+    /// The product, for the neighbours of a node in the matrix graph.
+    const SupportProduct &
+    support() const;
+
     /// A new time step: the region solver builds its region again from
     /// the free set of the step's first solve.
     void
@@ -157,6 +168,20 @@ namespace VPContact
           const double                     tolerance,
           const unsigned int               max_iterations);
 
+    /// Whether solve_free() can be used: the damage preconditioner is one
+    /// of the region solver's.
+    bool
+    solves_on_free_nodes() const;
+
+    /// solve() with the free nodes given instead of the held ones (see
+    /// DamageRegionSolver::solve_free()); only if solves_on_free_nodes().
+    unsigned int
+    solve_free(const LA::MPI::Vector           &b,
+               LA::MPI::Vector                 &x,
+               const std::vector<unsigned int> &free,
+               const double                     tolerance,
+               const unsigned int               max_iterations);
+
     /// Whether Solver/Damage obstacle solver = SNES VI: the bounds are then
     /// found by solve_obstacle() instead of the caller's active set.
     bool
@@ -176,6 +201,11 @@ namespace VPContact
 
 
   private:
+    /// The message of a damage CG that did not reach @p target.
+    static void
+    throw_no_convergence(const SolverControl::NoConvergence &e,
+                         const double                        target);
+
     /// The damage block of the FESystem's numbering: the index sets,
     /// block_start, owned_offset and cell_dofs.
     void

@@ -5,6 +5,7 @@
 
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -65,7 +66,42 @@ namespace VPContact
     void
     vmult(LA::MPI::Vector &y, const LA::MPI::Vector &x);
 
+    /**
+     * @p y = K @p x on the owned positions @p rows (ascending) alone, the
+     * other entries of @p y left alone. @p x may be nonzero only at owned
+     * positions in @p rows and at ghosts, and every row that such an entry
+     * reaches must be in @p rows (see DamageWorkSet). The sums are those of
+     * vmult(), in the same order, so the entries agree to the bit.
+     */
+    void
+    vmult_on(LA::MPI::Vector                 &y,
+             const LA::MPI::Vector           &x,
+             const std::vector<unsigned int> &rows);
+
+    /// The owned rows (positions) with an entry in the column of the owned
+    /// position @p position: its neighbours in the matrix graph and itself.
+    ArrayView<const unsigned int>
+    rows_of_owned(const unsigned int position) const;
+
+    /// The owned rows with an entry in the column of some ghost.
+    std::vector<unsigned int>
+    rows_of_ghosts() const;
+
   private:
+    /// Add K_ij @p x_g to the owned rows i of the column at the ghosted
+    /// position @p g.
+    void
+    add_column(double *y_values, const unsigned int g, const double x_g) const
+    {
+      for (unsigned int e = column_start[g]; e < column_start[g + 1]; ++e)
+        y_values[row[e]] += value[e] * x_g;
+    }
+
+    /// Add K_ij x_j to the owned rows i of the ghost columns j (several
+    /// ranks; nothing on one).
+    void
+    add_ghost_columns(double *y_values, const LA::MPI::Vector &x);
+
     /// For each position in the ghosted layout, its entries in the owned
     /// rows: (row, value), in CSR over the ghosted positions.
     std::vector<unsigned int> column_start;
