@@ -8,10 +8,42 @@
 #include <deal.II/lac/exceptions.h>
 
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 namespace VPContact
 {
+  namespace
+  {
+    // The entry of @p cache (most recently used first) that @p matches, moved
+    // to the front; if there is none, the one @p make builds, in front, the
+    // least recently used dropped beyond @p capacity.
+    template <typename Entry, typename Matches, typename Make>
+    Entry &
+    most_recent(std::vector<std::unique_ptr<Entry>> &cache,
+                const std::size_t                    capacity,
+                const Matches                       &matches,
+                const Make                          &make)
+    {
+      const auto known = std::find_if(cache.begin(),
+                                      cache.end(),
+                                      [&](const std::unique_ptr<Entry> &e) {
+                                        return matches(*e);
+                                      });
+      if (known != cache.end())
+        {
+          std::rotate(cache.begin(), known, known + 1);
+          return *cache.front();
+        }
+      if (cache.size() == capacity)
+        cache.pop_back();
+      cache.insert(cache.begin(), make());
+      return *cache.front();
+    }
+  } // namespace
+
+
+
   void
   copy_owned_values(const LA::MPI::Vector &from, LA::MPI::Vector &to)
   {
@@ -46,32 +78,22 @@ namespace VPContact
   GhostExchange::pair_for(const Epetra_BlockMap &source,
                           const Epetra_BlockMap &target)
   {
-    const auto known
-      = std::find_if(pairs.begin(),
-                     pairs.end(),
-                     [&](const std::unique_ptr<LayoutPair> &p) {
-                       return p->source_layout->DataPtr() == source.DataPtr()
-                              && p->target_layout->DataPtr()
-                                   == target.DataPtr();
-                     });
-    if (known != pairs.end())
-      {
-        std::rotate(pairs.begin(), known, known + 1);
-        return *pairs.front();
-      }
-
+    const auto same_maps = [&](const LayoutPair &p) {
+      return p.source_layout->DataPtr() == source.DataPtr()
+             && p.target_layout->DataPtr() == target.DataPtr();
+    };
     // Layouts not seen (a new mesh, or other vectors): compared in full
     // once, which walks every index.
-    auto pair          = std::make_unique<LayoutPair>();
-    pair->same_layouts = target.SameAs(source);
-    if (!pair->same_layouts)
-      pair->importer = std::make_unique<Epetra_Import>(target, source);
-    pair->source_layout = std::make_unique<Epetra_BlockMap>(source);
-    pair->target_layout = std::make_unique<Epetra_BlockMap>(target);
-    if (pairs.size() == max_pairs)
-      pairs.pop_back();
-    pairs.insert(pairs.begin(), std::move(pair));
-    return *pairs.front();
+    const auto make_pair = [&]() {
+      auto pair          = std::make_unique<LayoutPair>();
+      pair->same_layouts = target.SameAs(source);
+      if (!pair->same_layouts)
+        pair->importer = std::make_unique<Epetra_Import>(target, source);
+      pair->source_layout = std::make_unique<Epetra_BlockMap>(source);
+      pair->target_layout = std::make_unique<Epetra_BlockMap>(target);
+      return pair;
+    };
+    return most_recent(pairs, max_pairs, same_maps, make_pair);
   }
 
 
@@ -99,21 +121,13 @@ namespace VPContact
                                  const LA::MPI::Vector      &ghosted)
   {
     const Epetra_BlockMap &map = ghosted.trilinos_vector().Map();
-    const auto             known
-      = std::find_if(block_parts.begin(),
-                     block_parts.end(),
-                     [&](const std::unique_ptr<BlockParts> &p) {
-                       return p->ghosted_layout->DataPtr() == map.DataPtr();
-                     });
-    if (known != block_parts.end())
-      {
-        std::rotate(block_parts.begin(), known, known + 1);
-        return *block_parts.front();
-      }
-    if (block_parts.size() == max_block_parts)
-      block_parts.pop_back();
-    block_parts.insert(block_parts.begin(), make_block_parts(owned, ghosted));
-    return *block_parts.front();
+    return most_recent(
+      block_parts,
+      max_block_parts,
+      [&](const BlockParts &p) {
+        return p.ghosted_layout->DataPtr() == map.DataPtr();
+      },
+      [&]() { return make_block_parts(owned, ghosted); });
   }
 
 
