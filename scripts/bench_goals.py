@@ -37,11 +37,13 @@ def slower_reasons(slower):
         text += (" *Other* is the step's work outside the named phases, "
                  "which the program's timer does not split: the damage "
                  "step's right-hand side of the change, its first set "
-                 "decision and the nodes it frees ahead of the front, each "
-                 "a pass over all damage nodes (on several ranks with ghost "
-                 "exchanges and a product with the matrix), the "
-                 "displacement's start vector and update, and the friction "
-                 "sets.")
+                 "decision, the nodes it frees ahead of the front and the "
+                 "start of its work set, each a pass over all damage nodes "
+                 "(on several ranks with ghost exchanges and a product "
+                 "with the matrix), the displacement's start vector and "
+                 "update, and the friction sets. The passes between the "
+                 "damage solves run on the work set inside *damage "
+                 "solve*.")
     return text + " Every phase and its decision is in [design.md](design.md)."
 
 
@@ -145,13 +147,15 @@ def goals(best, sizes, algebras, every=None):
          f"{100 * share['solve']:.0f} % {substitutions}, "
          f"{100 * share['assembly']:.0f} % right-hand side assembly and "
          f"{100 * (share.get('other') or 0):.0f} % work outside the named "
-         "phases (*other*: the set decisions of the damage step between "
-         "its solves, the displacement's start vector and update, the "
-         "friction sets), the rest the error estimate, the stress update, the damage "
+         "phases (*other*: the damage step's passes over all nodes "
+         "before its first solve, the displacement's start vector and "
+         "update, the friction sets), the rest the error estimate, the stress update, the damage "
          "assembly and the output: no one phase holds the gap, and 0.2 "
          "would need every phase at about half its time. The damage "
          "solves run the program's region solver (CG over the free "
-         "nodes, the preconditioner of a region kept for the step). "
+         "nodes, the preconditioner of a region kept for the step), "
+         "and the passes between them visit the nodes the solves can "
+         "change (`DamageWorkSet`). "
          + overlap + then),
         ("no phase of HEAD slower than the same phase of an earlier commit "
          "(speed of HEAD relative to it)",
