@@ -126,10 +126,9 @@ namespace VPContact
 
     // From here on the passes between the solves visit the nodes the solves
     // can change (see DamageWorkSet), where the solver takes the free set
-    // as a list.
-    const bool on_work_set = system.solves_on_free_nodes();
-    if (on_work_set)
-      start_work_set(step_rhs);
+    // as a list and those nodes are few enough to pay for the set.
+    const bool on_work_set
+      = system.solves_on_free_nodes() && start_work_set(step_rhs);
 
     // While the sets still change, the solves that find them need not be
     // exact: their multipliers only decide the next sets. The first few
@@ -211,9 +210,23 @@ namespace VPContact
 
 
   template <int dim>
-  void
+  bool
   DamageProblem<dim>::start_work_set(const LA::MPI::Vector &step_rhs)
   {
+    // Where a quarter of the nodes or more move (a damage spread over much
+    // of the body), the set would hold most of them with their rings, and
+    // passes through its list cost more than the plain passes over all
+    // nodes, besides the set's own building: the step keeps those. All
+    // ranks take the same path.
+    const std::vector<unsigned int> moving
+      = bounds.moving_positions(old_damage);
+    const unsigned int n_owned = damage_owned.locally_owned_size();
+    if (4
+          * Utilities::MPI::sum<types::global_dof_index>(moving.size(),
+                                                         communicator)
+        >= Utilities::MPI::sum<types::global_dof_index>(n_owned, communicator))
+      return false;
+
     // Outside the work set the vectors the solves write hold what they
     // would hold after a solve over all nodes: no change, zeta_{n-1}, and
     // the residual b - K zeta_{n-1} (the ghosted damage and residual
@@ -225,13 +238,14 @@ namespace VPContact
     AssertThrow(!serial_layout
                   || static_cast<std::size_t>(
                        damage.trilinos_vector().Map().NumMyElements())
-                       == damage_owned.locally_owned_size(),
+                       == n_owned,
                 ExcInternalError());
     const SupportProduct &product = system.support();
-    work.clear(damage_owned.locally_owned_size());
-    work.add_neighbourhoods(bounds.moving_positions(old_damage), product);
+    work.clear(n_owned);
+    work.add_neighbourhoods(moving, product);
     work.add_neighbourhoods(system.hanging_node_positions(), product);
     work.add(product.rows_of_ghosts());
+    return true;
   }
 
 

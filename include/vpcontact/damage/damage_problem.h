@@ -186,8 +186,9 @@ namespace VPContact
     unsigned int
     solve_with_sets(const LA::MPI::Vector &step_rhs, const double tolerance);
     /// The work set of the step's solves after its first decision, and the
-    /// vectors outside it (see DamageWorkSet).
-    void
+    /// vectors outside it (see DamageWorkSet); false, and nothing built,
+    /// where a quarter of the nodes or more move.
+    bool
     start_work_set(const LA::MPI::Vector &step_rhs);
     /// solve_with_sets() with its passes over the work set alone.
     unsigned int
