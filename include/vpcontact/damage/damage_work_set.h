@@ -24,7 +24,8 @@ namespace VPContact
    * moving nodes, their neighbours in the matrix graph, the hanging nodes
    * with theirs, and on several ranks the rows coupled to ghosts (whose
    * values come from the other ranks). It is built once a step, after the
-   * step's first decision, and grows as nodes change set; the passes of
+   * step's first decision, where fewer than a quarter of the nodes move, and
+   * grows as nodes change set; the passes of
    * DamageProblem::solve_on_work_set() visit its positions only, in
    * ascending order, so their sums are those of the passes over all nodes
    * to the bit.
