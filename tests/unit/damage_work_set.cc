@@ -9,16 +9,11 @@
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/distributed/tria.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
 
 #include <algorithm>
 #include <iostream>
+
+#include "q1_pattern_matrix.h"
 
 using namespace VPContact;
 
@@ -52,29 +47,10 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
 
-  parallel::distributed::Triangulation<2> triangulation(comm);
-  GridGenerator::hyper_cube(triangulation);
-  triangulation.refine_global(4);
-  DoFHandler<2> dof_handler(triangulation);
-  dof_handler.distribute_dofs(FE_Q<2>(1));
-  const IndexSet owned = dof_handler.locally_owned_dofs();
-  IndexSet       relevant;
-  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-
-  // K_ij = 1 + (i + j) % 7 on the pattern, 20 on the diagonal: symmetric.
-  DynamicSparsityPattern pattern(relevant);
-  DoFTools::make_sparsity_pattern(dof_handler, pattern);
-  SparsityTools::distribute_sparsity_pattern(pattern, owned, comm, relevant);
-  LA::SparseMatrix K;
-  K.reinit(owned, owned, pattern, comm);
-  for (const auto i : owned)
-    for (auto entry = pattern.begin(i); entry != pattern.end(i); ++entry)
-      {
-        const auto j = entry->column();
-        K.set(i, j, i == j ? 20. : 1. + (i + j) % 7);
-      }
-  K.compress(VectorOperation::insert);
-  SupportProduct product;
+  const Q1PatternMatrix   q1(comm);
+  const IndexSet         &owned = q1.owned;
+  const LA::SparseMatrix &K     = q1.K;
+  SupportProduct          product;
   product.initialize(K, owned, comm);
 
   // x nonzero at every 13th node; the work set of those it owns.
