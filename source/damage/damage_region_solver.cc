@@ -121,6 +121,14 @@ namespace VPContact
 
 
 
+  double
+  DamageRegionSolver::target_of_last_solve() const
+  {
+    return last_target;
+  }
+
+
+
   void
   DamageRegionSolver::build_region(const unsigned int rings)
   {
@@ -529,7 +537,7 @@ namespace VPContact
         clean_up();
         return 0;
       }
-    const double target = tolerance * std::sqrt(b_norm2);
+    last_target = tolerance * std::sqrt(b_norm2);
 
     // Preconditioned CG on F. NaN compares false: a non-finite residual
     // ends in NoConvergence, as too many iterations do. The dot products
@@ -539,7 +547,7 @@ namespace VPContact
     double       residual_norm = std::sqrt(dot_free(residual, residual));
     unsigned int iteration     = 0;
     double       rz            = 0;
-    while (!(residual_norm <= target))
+    while (!(residual_norm <= last_target))
       {
         if (iteration == max_iterations || !std::isfinite(residual_norm))
           {

@@ -473,7 +473,12 @@ namespace VPContact
       }
     catch (const SolverControl::NoConvergence &e)
       {
-        throw_no_convergence(e, control.tolerance());
+        throw_no_convergence(e,
+                             (use_region_solver ?
+                                region_solver.target_of_last_solve() :
+                                control.tolerance()),
+                             tolerance,
+                             max_iterations);
       }
     return 0;
   }
@@ -504,7 +509,10 @@ namespace VPContact
       }
     catch (const SolverControl::NoConvergence &e)
       {
-        throw_no_convergence(e, 0.);
+        throw_no_convergence(e,
+                             region_solver.target_of_last_solve(),
+                             tolerance,
+                             max_iterations);
       }
     return 0;
   }
@@ -514,7 +522,9 @@ namespace VPContact
   template <int dim>
   void
   DamageSystem<dim>::throw_no_convergence(const SolverControl::NoConvergence &e,
-                                          const double target)
+                                          const double       target,
+                                          const double       tolerance,
+                                          const unsigned int max_iterations)
   {
     // Every rank gets here in the same iteration (the residual is global).
     AssertThrow(false,
@@ -522,8 +532,13 @@ namespace VPContact
                            + std::to_string(e.last_step)
                            + " iterations the residual is "
                            + to_text(e.last_residual) + " > " + to_text(target)
-                           + ". Raise Solver/Maximum linear iterations or "
-                             "loosen Solver/Relative tolerance."));
+                           + " (" + to_text(tolerance)
+                           + " times |b| on the free nodes). Raise "
+                             "Solver/Maximum linear iterations = "
+                           + std::to_string(max_iterations)
+                           + "; a looser Solver/Relative tolerance helps only "
+                             "the solves that stop at it (the first solves "
+                             "of a step stop at 1e-4 or at it, if looser)."));
   }
 
 

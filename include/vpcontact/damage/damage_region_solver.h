@@ -121,6 +121,11 @@ namespace VPContact
     unsigned int
     n_region_builds() const;
 
+    /// The absolute residual the last solve aimed at: the tolerance times
+    /// |b| on its free nodes (for the message of a solve that misses it).
+    double
+    target_of_last_solve() const;
+
   private:
     /// The free set @p free (ascending owned positions); builds the region
     /// if it does not hold them.
@@ -297,6 +302,9 @@ namespace VPContact
     /// Positions in ghost_values (the halo's ghost entries).
     std::vector<unsigned int> ghost_column;
     std::vector<double>       ghost_value;
+
+    /// See target_of_last_solve().
+    double last_target = 0.;
     /// The owned positions the halo sends to other ranks, with their
     /// region index (or -1).
     std::vector<std::pair<unsigned int, int>> exported;

@@ -201,10 +201,13 @@ namespace VPContact
 
 
   private:
-    /// The message of a damage CG that did not reach @p target.
+    /// The message of a damage CG that did not reach @p target, the
+    /// relative @p tolerance of |b| within @p max_iterations.
     static void
     throw_no_convergence(const SolverControl::NoConvergence &e,
-                         const double                        target);
+                         const double                        target,
+                         const double                        tolerance,
+                         const unsigned int                  max_iterations);
 
     /// The damage block of the FESystem's numbering: the index sets,
     /// block_start, owned_offset and cell_dofs.
