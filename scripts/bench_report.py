@@ -355,6 +355,25 @@ def against_section(every):
     return lines
 
 
+def steps_text(steps):
+    return f"{steps} step" + ("" if str(steps) == "1" else "s")
+
+
+def other_sittings(rows, m):
+    """A sentence for each scene whose first row was measured in another
+    sitting than the first row of all (bench_3d --scenes replaces only the
+    scenes it runs), so that the header does not claim those rows."""
+    text = ""
+    for scene in dict.fromkeys(r.get("scene") or "paper" for r in rows):
+        f = next(r for r in rows if (r.get("scene") or "paper") == scene)
+        if (f["date"], f["cpu"], f["steps"]) != (m["date"], m["cpu"],
+                                                 m["steps"]):
+            text += (f" The *{scene}* rows: {steps_text(f['steps'])}, "
+                     "measured at "
+                     f"commit {f['commit']} on {f['date']} ({f['cpu']}).")
+    return text
+
+
 def scene_3d(csv_path):
     """The section of the 3D paper scene from bench_3d.csv beside the
     CSV of the 2D runs (scripts/bench_3d), if there is one."""
@@ -368,7 +387,13 @@ def scene_3d(csv_path):
         return []
     m = rows[0]
     stopped = [r for r in rows if r["status"] != "ok"]
-    commits = sorted({r["commit"] for r in rows} - {m["commit"]})
+    # The rows after the first of each scene ran an earlier commit's
+    # executable in the same sitting (--against).
+    firsts = {}
+    for r in rows:
+        firsts.setdefault(r.get("scene") or "paper", id(r))
+    commits = sorted({r["commit"] for r in rows if id(r) not in
+                      firsts.values()} - {m["commit"]})
     side_by_side = (
         f" Rows of commit {', '.join(commits)} ran the executable of that "
         "earlier commit right after this one's (`--against`), for "
@@ -381,12 +406,12 @@ def scene_3d(csv_path):
         "`prm/paper_fig1_3d_slip.prm` (*slip*: the same without damage and "
         "with a friction bound low enough for the contact face to slip) on "
         "N × N × N cells (column *N*), "
-        f"{m['steps']} steps of k = 0.01 with `CG with AMG` (Trilinos "
+        f"{steps_text(m['steps'])} of k = 0.01 with `CG with AMG` (Trilinos "
         "ML), no field output, measured by `scripts/bench_3d` at commit "
         f"{m['commit']} on {m['date']} ({m['cpu']}). Time per step in ms, "
         "split as above; *AS its*: friction active-set iterations per "
         "step (one where a node changes set reassembles the matrix and "
-        "rebuilds AMG)." + side_by_side, "",
+        "rebuilds AMG)." + side_by_side + other_sittings(rows, m), "",
         "| scene | commit | N | ranks | dofs | total [s] | per step [ms] | " +
         " | ".join(t for _, t in PHASE_TITLES) +
         " | CG its per step | AS its per step | memory rank 0 [MB] | "
