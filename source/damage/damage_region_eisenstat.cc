@@ -264,7 +264,8 @@ namespace VPContact
           x[i] = 0.;
         return 0;
       }
-    last_target = tolerance * std::sqrt(b_norm2);
+    const double target = tolerance * std::sqrt(b_norm2);
+    last_target         = target;
 
     double *const rh = hat_residual.data();
     double *const ph = hat_direction.data();
@@ -280,7 +281,7 @@ namespace VPContact
     // too many iterations do.
     unsigned int iteration = 0;
     double       rz        = 0;
-    while (!(std::sqrt(rr) <= last_target))
+    while (!(std::sqrt(rr) <= target))
       {
         if (iteration == max_iterations || !std::isfinite(rr))
           {

@@ -537,7 +537,8 @@ namespace VPContact
         clean_up();
         return 0;
       }
-    last_target = tolerance * std::sqrt(b_norm2);
+    const double target = tolerance * std::sqrt(b_norm2);
+    last_target         = target;
 
     // Preconditioned CG on F. NaN compares false: a non-finite residual
     // ends in NoConvergence, as too many iterations do. The dot products
@@ -547,7 +548,7 @@ namespace VPContact
     double       residual_norm = std::sqrt(dot_free(residual, residual));
     unsigned int iteration     = 0;
     double       rz            = 0;
-    while (!(residual_norm <= last_target))
+    while (!(residual_norm <= target))
       {
         if (iteration == max_iterations || !std::isfinite(residual_norm))
           {
