@@ -61,9 +61,9 @@ def arguments():
                    "and run each configuration with it right after HEAD's, "
                    "or only those whose name matches REGEX (as --configs); "
                    "the report compares their phases (repeatable)")
-    p.add_argument("--small-pages", nargs="?", const=".", metavar="REGEX",
-                   help="also run HEAD's build with VPCONTACT_HUGE_PAGES=0 "
-                   "(the heap in the system's 4 KiB pages) right after each "
+    p.add_argument("--huge-pages", nargs="?", const=".", metavar="REGEX",
+                   help="also run HEAD's build with VPCONTACT_HUGE_PAGES=1 "
+                   "(the heap in transparent huge pages) right after each "
                    "configuration, or each whose name matches REGEX; the "
                    "report compares it like an --against commit")
     p.add_argument("--configs", metavar="REGEX", help="only the runs whose "
@@ -334,7 +334,8 @@ def machine():
                 "source", "include", "CMakeLists.txt"]):
         commit += " with local changes"
     # The kernel's transparent huge page mode, the word in brackets:
-    # vpcontact asks for huge pages where it is "madvise" (huge_pages.h).
+    # vpcontact asks for huge pages where it is "madvise" and
+    # VPCONTACT_HUGE_PAGES=1 (huge_pages.h).
     try:
         thp = re.search(r"\[(\w+)\]", open(
             "/sys/kernel/mm/transparent_hugepage/enabled").read()).group(1)
@@ -417,17 +418,17 @@ def plan(a, programs):
     return chosen
 
 
-def small_pages(a, head):
-    """With --small-pages: HEAD's build once more, its heap in 4 KiB pages
-    (VPCONTACT_HUGE_PAGES=0, huge_pages.h), labelled as a commit of its
-    own so that the report sets its phases beside HEAD's."""
-    if not a.small_pages:
+def huge_pages(a, head):
+    """With --huge-pages: HEAD's build once more, its heap in transparent
+    huge pages (VPCONTACT_HUGE_PAGES=1, huge_pages.h), labelled as a commit
+    of its own so that the report sets its phases beside HEAD's."""
+    if not a.huge_pages:
         return []
-    program = bench_against.Program(head.commit + " 4 KiB pages",
+    program = bench_against.Program(head.commit + " huge pages",
                                     head.executable, ROOT)
     program.has = head.has
-    program.configs = a.small_pages
-    program.environment = ("VPCONTACT_HUGE_PAGES=0",)
+    program.configs = a.huge_pages
+    program.environment = ("VPCONTACT_HUGE_PAGES=1",)
     return [program]
 
 
@@ -495,7 +496,7 @@ def main():
         sys.exit(f"{a.executable} --print-parameters printed no entries")
     plan(a, [head])  # a --configs that selects nothing stops before a build
     with bench_against.Worktrees(a.workdir) as worktrees:
-        runs = plan(a, [head] + small_pages(a, head)
+        runs = plan(a, [head] + huge_pages(a, head)
                     + earlier_programs(a, worktrees, head.commit))
         for program, code, algebra, solver, _, ranks, skip in runs:
             if skip:

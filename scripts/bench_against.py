@@ -22,7 +22,7 @@ class Program:
     file of its tree (a binary reads the scene as its own commit writes it:
     an earlier one refuses entries it does not know), the entries it offers
     (`--print-parameters`, filled in by bench.py) and the environment
-    entries its runs get (bench.py --small-pages)."""
+    entries its runs get (bench.py --huge-pages)."""
 
     def __init__(self, commit, executable, root):
         self.commit = commit
@@ -32,7 +32,7 @@ class Program:
             self.scene_hash = hashlib.sha1(f.read()).hexdigest()[:7]
         self.has = {}
         # NAME=VALUE entries set for this binary's runs alone (bench.py
-        # --small-pages); none for a commit's own build.
+        # --huge-pages); none for a commit's own build.
         self.environment = ()
 
 

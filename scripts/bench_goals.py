@@ -4,7 +4,7 @@ missed: the table of doc/performance.md that bench_report.py writes."""
 import math
 
 from bench_report import (PHASE_TITLES, config, damage, fmt, percent, ratio,
-                          short, small_pages)
+                          short, page_setting)
 
 
 def slower_reasons(slower):
@@ -112,7 +112,7 @@ def goals(best, sizes, algebras, every=None):
     earlier = [r for (s, k), r in (every or {}).items()
                if s == size and k[0] == "vpcontact" and k[3] == 1
                and r["commit"] != fastest["commit"]
-               and not small_pages(r)]
+               and not page_setting(r)]
     then = ""
     if earlier:
         e = min(earlier, key=lambda r: r["total_s"])
@@ -129,7 +129,7 @@ def goals(best, sizes, algebras, every=None):
             continue
         for (s2, k2), e in every.items():
             if (s2 != size or k2[:4] != k[:4] or e["commit"] == r["commit"]
-                    or small_pages(e)):
+                    or page_setting(e)):
                 continue
             for phase, title in PHASE_TITLES:
                 now, then_ms = r.get(phase + "_ms"), e.get(phase + "_ms")

@@ -44,10 +44,13 @@ def huge_page_line(m):
         return [f"* Transparent huge pages: `{thp}` (vpcontact asks for none "
                 "in this mode)."]
     return ["* Transparent huge pages: `madvise` (only memory that asks gets "
-            "them). vpcontact asks for its heap (it restarts itself with "
+            "them). vpcontact asks for them for its heap only with "
+            "`VPCONTACT_HUGE_PAGES=1` (it then restarts itself with "
             "`GLIBC_TUNABLES=glibc.malloc.hugetlb=1`, "
-            "`include/vpcontact/app/huge_pages.h`); the peer and commits "
-            "before that run with 4 KiB pages, as the system gives them."]
+            "`include/vpcontact/app/huge_pages.h`): the rows named *huge "
+            "pages* (`--huge-pages`). Commits from ef9ea16 to 426233a asked "
+            "by default; the other runs and the peer have 4 KiB pages, as "
+            "the system gives them."]
 
 
 def untimed_in_other(r):
@@ -108,10 +111,10 @@ def is_head(r):
     return r["commit"] == head(r)
 
 
-def small_pages(r):
-    """Whether the row is HEAD's build run with 4 KiB pages (bench.py
-    --small-pages): a setting of HEAD, not an earlier commit."""
-    return r["commit"].endswith(" 4 KiB pages")
+def page_setting(r):
+    """Whether the row is HEAD's build run with its heap in huge pages
+    (bench.py --huge-pages): a setting of HEAD, not an earlier commit."""
+    return r["commit"].endswith(" huge pages")
 
 
 def short(r):
@@ -523,11 +526,11 @@ def write_report(out, csv_path, rows):
         f"* {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB, {m['os']}; "
         f"deal.II {m['dealii']}, PETSc {m['petsc'] or '–'}, DOLFINx "
         f"{m['dolfinx'] or '–'}; vpcontact at commit {head(m)}"
-        + (" (also with its heap in 4 KiB pages)"
-           if any(small_pages(r) for r in rows) else "")
+        + (" (also with its heap in huge pages)"
+           if any(page_setting(r) for r in rows) else "")
         + "".join(f" and at {c}" for c in sorted(
             {r["commit"] for r in rows
-             if not is_head(r) and not small_pages(r)}))
+             if not is_head(r) and not page_setting(r)}))
         + f"; measured {m['date']}.",
         f"* Scene: `prm/paper_fig1.prm` (Tresca friction, gradient damage, "
         f"the paper's law) on N x N cells, {steps} steps over T = 1; "
@@ -624,9 +627,9 @@ def write_report(out, csv_path, rows):
         "work folder, runs each configuration it offers, or those whose "
         "name matches REGEX, right after HEAD's and fills the section "
         "*Phases against earlier commits*; the worktree is removed at the "
-        "end), `--small-pages [REGEX]` (HEAD's build again with "
-        "`VPCONTACT_HUGE_PAGES=0`, its heap in 4 KiB pages, compared in the "
-        "same section). `scripts/bench_report.py CSV PAGE` "
+        "end), `--huge-pages [REGEX]` (HEAD's build again with "
+        "`VPCONTACT_HUGE_PAGES=1`, its heap in transparent huge pages, "
+        "compared in the same section). `scripts/bench_report.py CSV PAGE` "
         "rewrites the page from the CSV alone. Run it with nothing else "
         "busy on the machine."]
     with open(out, "w") as f:

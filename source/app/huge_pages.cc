@@ -1,21 +1,24 @@
-// Transparent huge pages for the heap: on kernels that give them only to
-// memory that asks for them, the program starts itself again with glibc's
-// malloc told to ask.
+// Transparent huge pages for the heap, on request: where the kernel gives
+// them only to memory that asks for them and VPCONTACT_HUGE_PAGES=1 is set,
+// the program starts itself again with glibc's malloc told to ask.
 //
-// Why: a run allocates large arrays again and again (the factors of every
-// factorization, the vectors of a new mesh, the patches and the text of
-// every field file), and the kernel maps each 4 KiB page of them on its
-// first touch, in a page fault: hundreds of thousands per run at 512^2
-// cells, each one dearer inside a virtual machine. With 2 MiB pages there
-// are up to 512 times fewer, and the factors' substitutions miss the TLB
-// less. Most distributions set transparent huge pages to "madvise": only
-// memory marked with madvise(MADV_HUGEPAGE) gets them, and glibc's malloc
-// marks its memory only when GLIBC_TUNABLES says glibc.malloc.hugetlb=1 at
-// the start of the process. Nothing in the program can set that later,
-// hence the restart. doc/performance.md measures what it saves;
-// VPCONTACT_HUGE_PAGES=0 turns it off.
+// Why it is a choice and not the default: a run allocates large arrays
+// again and again (the factors of every factorization, the vectors of a new
+// mesh, the estimate's buffers, the patches and the text of every field
+// file), and with 4 KiB pages the kernel maps each page on its first touch,
+// in a page fault. With 2 MiB pages there are up to 512 times fewer faults,
+// and the factors' substitutions miss the TLB less. But each huge page must
+// be found whole and cleared at its first touch, and on the virtual
+// machines measured (Intel Xeon and AMD EPYC, scripts/bench --huge-pages)
+// that cost more in the set-up, the factorization and the estimate than the
+// fewer faults saved in the steps (doc/performance.md). Most distributions
+// set transparent huge pages to "madvise": only memory marked with
+// madvise(MADV_HUGEPAGE) gets them, and glibc's malloc marks its memory
+// only when GLIBC_TUNABLES says glibc.malloc.hugetlb=1 at the start of the
+// process. Nothing in the program can set that later, hence the restart.
 #include <vpcontact/app/huge_pages.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -54,9 +57,9 @@ namespace VPContact
   huge_page_tunables(const std::string &thp_enabled,
                      const std::string &glibc_version,
                      const char        *tunables,
-                     const char        *opt_out)
+                     const char        *request)
   {
-    if (opt_out != nullptr && std::string(opt_out) == "0")
+    if (request == nullptr || std::string(request) != "1")
       return "";
     if (thp_enabled.find("[madvise]") == std::string::npos)
       return "";
@@ -80,13 +83,20 @@ namespace VPContact
     std::ifstream     file("/sys/kernel/mm/transparent_hugepage/enabled");
     const std::string thp_enabled((std::istreambuf_iterator<char>(file)),
                                   std::istreambuf_iterator<char>());
+    const char *const request = std::getenv("VPCONTACT_HUGE_PAGES");
+    if (request != nullptr && std::string(request) != ""
+        && std::string(request) != "0" && std::string(request) != "1")
+      std::fprintf(stderr,
+                   "vpcontact: VPCONTACT_HUGE_PAGES = %s is neither 1 (huge "
+                   "pages for the heap) nor 0; the run keeps the system's "
+                   "pages.\n",
+                   request);
     const char       *present = std::getenv("GLIBC_TUNABLES");
     const std::string previous(present != nullptr ? present : "");
-    const std::string value
-      = huge_page_tunables(thp_enabled,
-                           gnu_get_libc_version(),
-                           present,
-                           std::getenv("VPCONTACT_HUGE_PAGES"));
+    const std::string value = huge_page_tunables(thp_enabled,
+                                                 gnu_get_libc_version(),
+                                                 present,
+                                                 request);
     if (value.empty() || setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0)
       return;
     // Nothing is flushed or opened yet: the new process starts where this

@@ -1,6 +1,7 @@
 // The vpcontact executable: it restarts itself with huge pages for its heap
-// where the kernel gives them only on request (huge_pages.h), then loads
-// the library that holds the whole program and runs it.
+// where VPCONTACT_HUGE_PAGES=1 asks for them and the kernel gives them only
+// on request (huge_pages.h), then loads the library that holds the whole
+// program and runs it.
 //
 // Why the library is loaded here rather than linked: it brings deal.II,
 // Trilinos, PETSc and MPI, about 200 shared libraries whose loading takes
