@@ -336,6 +336,7 @@ namespace VPContact
   OutputWriter<dim>::write_fields(FieldPatches<dim> &&fields,
                                   const unsigned int  n,
                                   const double        time,
+                                  const bool          steps_follow,
                                   const MPI_Comm      communicator)
   {
     finish_field_output(communicator);
@@ -354,15 +355,16 @@ namespace VPContact
         stem + "." + Utilities::int_to_string(r, rank_digits) + ".vtu");
     const std::string own_piece = output.pieces[output.rank];
 
-    output.names         = fields.names;
-    output.vector_ranges = fields.vector_ranges;
-    output.cell_names    = fields.cell_names;
-    pending_output       = std::move(output);
+    output.names          = fields.names;
+    output.vector_ranges  = fields.vector_ranges;
+    output.cell_names     = fields.cell_names;
+    pending_output        = std::move(output);
+    const bool background = in_background && steps_follow;
     field_writer.start(std::move(fields),
                        output_directory + "/" + own_piece,
                        vtk_flags,
-                       in_background);
-    if (!in_background)
+                       background);
+    if (!background)
       finish_field_output(communicator);
   }
 

@@ -211,7 +211,10 @@ namespace VPContact
     const unsigned int first_step = setup_cycle(cycle);
     if (march(first_step))
       return;
-    output_writer.finish_field_output(mpi_communicator);
+    {
+      TimerOutput::Scope t(computing_timer, "Postprocess and output");
+      output_writer.finish_field_output(mpi_communicator);
+    }
     print_summary(timer.wall_time());
     if (output_writer.report_solve_floor())
       displacement_problem.report_solve_floor();

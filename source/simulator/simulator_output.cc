@@ -398,6 +398,7 @@ namespace VPContact
     output_writer.write_fields(std::move(fields),
                                n,
                                time_discretization.time(n),
+                               n < time_discretization.n_steps(),
                                mpi_communicator);
   }
 

@@ -78,13 +78,16 @@ namespace VPContact
 
     /**
      * Write @p fields for step @p n: this rank's .vtu piece, in the
-     * background if so chosen. The field output before it is finished
-     * first.
+     * background if so chosen and @p steps_follow (no step would overlap
+     * the write of the run's last output, which the run then waits for:
+     * written at once, it has all of the rank's threads). The field output
+     * before it is finished first.
      */
     void
     write_fields(FieldPatches<dim> &&fields,
                  const unsigned int  n,
                  const double        time,
+                 const bool          steps_follow,
                  const MPI_Comm      communicator);
 
     /**
