@@ -41,9 +41,12 @@ def slower_reasons(slower):
                  "start of its work set, each a pass over all damage nodes "
                  "(on several ranks with ghost exchanges and a product "
                  "with the matrix), the displacement's start vector and "
-                 "update, and the friction sets. The passes between the "
-                 "damage solves run on the work set inside *damage "
-                 "solve*.")
+                 "update, the friction sets, storing the new damage, and "
+                 "the initial state at t = 0 (the run's time after its "
+                 "set-up is divided among its steps). The passes between "
+                 "the damage solves run on the work set inside *damage "
+                 "solve*; the wait for the last field output is in "
+                 "*output*.")
     return text + " Every phase and its decision is in [design.md](design.md)."
 
 
