@@ -10,8 +10,8 @@
 // and the factors' substitutions miss the TLB less. But each huge page must
 // be found whole and cleared at its first touch, and on the virtual
 // machines measured (Intel Xeon and AMD EPYC, scripts/bench --huge-pages)
-// that cost more in the set-up, the factorization and the estimate than the
-// fewer faults saved in the steps (doc/performance.md). Most distributions
+// that cost about as much as the fewer faults saved over a run, or more
+// (doc/performance.md). Most distributions
 // set transparent huge pages to "madvise": only memory marked with
 // madvise(MADV_HUGEPAGE) gets them, and glibc's malloc marks its memory
 // only when GLIBC_TUNABLES says glibc.malloc.hugetlb=1 at the start of the
