@@ -340,10 +340,10 @@ namespace VPContact
     Changes      changes;
     for (auto &node : nodes)
       {
-        // c of the order of E/h, so that the multipliers and c times the
-        // displacements compare alike.
         const double c
-          = law.complementarity_factor() * youngs_modulus / node.length;
+          = complementarity_constant<dim>(law.complementarity_factor(),
+                                          youngs_modulus,
+                                          node.length);
         if (unilateral && decide_contact(node, c))
           {
             if (node.owned)

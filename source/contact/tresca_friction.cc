@@ -35,6 +35,17 @@ namespace VPContact
 
 
   template <int dim>
+  double
+  complementarity_constant(const double factor,
+                           const double youngs_modulus,
+                           const double measure)
+  {
+    return factor * youngs_modulus / (dim == 2 ? measure : std::sqrt(measure));
+  }
+
+
+
+  template <int dim>
   void
   TrescaFriction<dim>::declare_parameters(ParameterHandler &prm)
   {
@@ -54,17 +65,19 @@ namespace VPContact
                         "The stick/slip iteration of one step stops the run "
                         "with a message if the sets still change after this "
                         "many iterations.");
-      prm.declare_entry("Complementarity factor",
-                        "1",
-                        Patterns::Double(0),
-                        "Scales c in the stick/slip test |lambda + c w| <= g; "
-                        "c = factor x (Young's modulus) / (the node's "
-                        "boundary length), of the order of the stiffness "
-                        "per node. In exact arithmetic any positive value "
-                        "gives the same solution and changes only the "
-                        "number of iterations; in floating point a factor "
-                        "far from 1 lets round-off in lambda or w decide the "
-                        "sets, so it must lie in [1e-6, 1e6].");
+      prm.declare_entry(
+        "Complementarity factor",
+        "1",
+        Patterns::Double(0),
+        "Scales c in the stick/slip test |lambda + c w| <= g; "
+        "c = factor x (Young's modulus) / h with h the "
+        "node's size (its boundary length in 2D, the square "
+        "root of its boundary area in 3D), of the order of "
+        "the stiffness per node. In exact arithmetic any positive value "
+        "gives the same solution and changes only the "
+        "number of iterations; in floating point a factor "
+        "far from 1 lets round-off in lambda or w decide the "
+        "sets, so it must lie in [1e-6, 1e6].");
       prm.declare_entry("Slip direction tolerance",
                         "1e-10",
                         Patterns::Double(0),
@@ -204,7 +217,7 @@ namespace VPContact
   void
   TrescaFriction<dim>::check_iteration_constants() const
   {
-    // c = factor E / m_i compares lambda with c w. The sets are the same
+    // c = factor E / h_i compares lambda with c w. The sets are the same
     // for any c > 0 only in exact arithmetic: with a factor of 1e100, the
     // round-off in w of a node that sticks makes c w larger than g, and with
     // 1e-100 the slip of a node never counts; either way the iteration
@@ -216,7 +229,7 @@ namespace VPContact
       "Contact/Complementarity factor",
       c_factor,
       "the factor must lie in [1e-6, 1e6], e.g. 1: c = factor x E / (the "
-      "node's boundary length) compares the friction multiplier with the "
+      "node's size) compares the friction multiplier with the "
       "stiffness times the slip, and a factor far outside this range lets "
       "round-off decide which nodes stick.");
     // A slip direction is a unit vector: its round-off is about 1e-16, and
@@ -452,4 +465,8 @@ namespace VPContact
                   const Tensor<1, 3> &,
                   const double,
                   const double);
+  template double
+  complementarity_constant<2>(const double, const double, const double);
+  template double
+  complementarity_constant<3>(const double, const double, const double);
 } // namespace VPContact

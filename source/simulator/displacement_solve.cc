@@ -88,12 +88,12 @@ namespace VPContact
     if (with_viscoplastic_rate)
       increment_predictor.predict(increment_owned.block(0));
     // With CG, the solves after a change of the sets may stop early (see
-    // may_solve_loosely()); once the sets stay, one more solve at the full
-    // tolerance from there, whose sets must stay too, gives the step's
-    // solution as an exact solve would. The first solve of a step is at
-    // the full tolerance, since the sets of the last step mostly hold.
-    const bool may_loosen = may_solve_loosely();
-    bool       loose      = false;
+    // may_solve_loosely()). Once the sets stay, the rest of the step solves
+    // at the full tolerance until they stay under such a solve too (a
+    // loose solve from there would do no CG iteration). The first solve of
+    // a step is at the full tolerance: the last step's sets mostly hold.
+    bool may_loosen = may_solve_loosely();
+    bool loose      = false;
     for (unsigned int iteration = 1;; ++iteration)
       {
         displacement.solver.set_loose_tolerance(loose);
@@ -109,7 +109,8 @@ namespace VPContact
         const bool settled = friction_sets_settled(time, iteration);
         if (settled && !loose)
           break;
-        loose = !settled && may_loosen;
+        may_loosen = may_loosen && !settled;
+        loose      = may_loosen;
       }
     displacement.solver.set_loose_tolerance(false);
 

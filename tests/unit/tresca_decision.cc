@@ -6,6 +6,8 @@
 // lambda = g n + beta (I - n n^T) w. On a line (one tangent direction) this
 // is the sign switch lambda = g sign(w); in the tangent plane of a 3D
 // contact surface it is the ball |lambda| <= g.
+// Last, c itself: factor E / h with the node's size h (its boundary
+// length in 2D, the square root of its boundary area in 3D).
 #include <vpcontact/contact/tresca_friction.h>
 
 #include <iostream>
@@ -57,4 +59,15 @@ main()
   show(Tensor<1, 3>({0, 3, 4}), Tensor<1, 3>({0.1, 0, 0}), 5, 1);
   // Inside the ball but moving: |(1, 0, 0) + 10 (0.5, 0, 0)| = 6 > 5: slip.
   show(Tensor<1, 3>({1, 0, 0}), Tensor<1, 3>({0.5, 0, 0}), 5, 10);
+
+  // c = factor E / h with the node's size h: a 2D node of boundary length
+  // 0.1 and a 3D node of boundary area 0.01 both have h = 0.1, so c = 10 E;
+  // a 3D node of a 72^3 mesh (area 1/72^2) has h = 1/72.
+  std::cout << "c (2D, m = 0.1, E = 1000) = "
+            << complementarity_constant<2>(1, 1000, 0.1) << std::endl;
+  std::cout << "c (3D, m = 0.01, E = 1000) = "
+            << complementarity_constant<3>(1, 1000, 0.01) << std::endl;
+  std::cout << "c (3D, m = 1/72^2, E = 1000, factor 0.5) = "
+            << complementarity_constant<3>(0.5, 1000, 1. / (72 * 72))
+            << std::endl;
 }

@@ -153,7 +153,7 @@ namespace VPContact
      * Recompute p, lambda and w from the ghosted @p residual, @p increment
      * and last step's displacement @p previous, and take the next sets:
      * contact or separation (unilateral), then stick or slip with
-     * tresca_decision(), using c = factor * @p youngs_modulus / m_i. A slip
+     * tresca_decision(), using c of complementarity_constant(). A slip
      * node keeps its direction and slip stiffness while its direction
      * moves by at most the direction tolerance of @p law. Coulomb's bounds
      * follow the pressures of this iterate.

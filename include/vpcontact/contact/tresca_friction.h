@@ -68,6 +68,22 @@ namespace VPContact
                   const double          c);
 
   /**
+   * The constant c of tresca_decision() at a contact node of lumped
+   * boundary measure @p measure (a length in 2D, an area in 3D):
+   * c = @p factor E / h with the node's size h = m_i in 2D and sqrt(m_i)
+   * in 3D. E / h is the stiffness per node over its measure, so that c w
+   * is a traction like lambda. E / m_i in 3D would grow like 1/h^2: on
+   * fine meshes the slip stiffness g c / (|lambda + c w| - g) of the nodes
+   * that barely slip would dwarf the body's, CG would need many times the
+   * iterations, and the stick/slip iteration would stop settling.
+   */
+  template <int dim>
+  double
+  complementarity_constant(const double factor,
+                           const double youngs_modulus,
+                           const double measure);
+
+  /**
    * Section "Contact": the normal condition (bilateral u.nu = 0, or
    * unilateral u.nu <= g_0 with the foundation's normal nu and the initial
    * gap g_0(x, t)), the friction law (Tresca with the bound g(x, t) >= 0,
