@@ -33,10 +33,10 @@ namespace VPContact
     // loops fill the cores, their serial parts leave some idle, and the
     // write runs there, or in full when the next output or the end of the
     // run waits for it. A rank of one thread (several ranks on as many
-    // cores) keeps the priority: there the waits for the other ranks are
-    // spent polling, and a write at the lowest priority would only run
-    // once the next output waits for it, the whole write then added to
-    // that step.
+    // cores) has no idle core: OutputWriter writes at once there, and a
+    // write started in the background keeps the priority (the waits for
+    // the other ranks are spent polling, and a write at the lowest
+    // priority would only run once the next output waits for it).
     template <typename Work>
     void
     run_yielding_to_steps(const Work &work)

@@ -4,6 +4,7 @@
 #include <vpcontact/postprocess/resumed_field_outputs.h>
 #include <vpcontact/postprocess/vtu_cell_data.h>
 
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
@@ -181,7 +182,9 @@ namespace VPContact
                         Patterns::Bool(),
                         "Compress and write the .vtu files of a field output "
                         "in a task of their own while the next steps are "
-                        "computed. "
+                        "computed, where the rank has several threads "
+                        "(on a rank of one thread, as with one MPI rank per "
+                        "core, they are written at once). "
                         "The .pvtu and .pvd records list an output once its "
                         "files are complete. false writes them before the "
                         "next step starts.");
@@ -355,11 +358,17 @@ namespace VPContact
         stem + "." + Utilities::int_to_string(r, rank_digits) + ".vtu");
     const std::string own_piece = output.pieces[output.rank];
 
-    output.names          = fields.names;
-    output.vector_ranges  = fields.vector_ranges;
-    output.cell_names     = fields.cell_names;
-    pending_output        = std::move(output);
-    const bool background = in_background && steps_follow;
+    output.names         = fields.names;
+    output.vector_ranges = fields.vector_ranges;
+    output.cell_names    = fields.cell_names;
+    pending_output       = std::move(output);
+    // A rank of one thread (several ranks, one per core) has no idle core
+    // for the write: a writer thread beside the steps would take the
+    // rank's own core from them, while the other ranks wait for it in
+    // every reduction, so that the write would cost the run more than
+    // writing at once, all ranks together.
+    const bool background
+      = in_background && steps_follow && MultithreadInfo::n_threads() > 1;
     field_writer.start(std::move(fields),
                        output_directory + "/" + own_piece,
                        vtk_flags,

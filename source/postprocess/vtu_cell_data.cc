@@ -84,15 +84,13 @@ namespace VPContact
                + "\n    </DataArray>\n";
       }
     xml += "    </CellData>\n";
-    // The point fields alone stay in the patches.
+    // The point fields alone stay in the patches. They are the first rows,
+    // and a table stores its rows one after the other, so that dropping
+    // the last rows keeps them where they are: no copy, and no allocation
+    // per cell.
     for (auto &patch : patches)
-      {
-        Table<2, float> point_rows(n_point, patch.data.n_cols());
-        for (unsigned int r = 0; r < n_point; ++r)
-          for (unsigned int c = 0; c < patch.data.n_cols(); ++c)
-            point_rows(r, c) = patch.data(r, c);
-        patch.data.swap(point_rows);
-      }
+      patch.data.reinit(TableIndices<2>(n_point, patch.data.n_cols()),
+                        /*omit_default_initialization=*/true);
     return xml;
   }
 

@@ -2,7 +2,7 @@
 // are the files written before the next step: the elastic bar, run both
 // ways, leaves the same .vtu, .pvtu and .pvd files (but for the date deal.II
 // puts in a comment), and every file the records name is on disk. Serial and
-// on 2 ranks.
+// on 2 ranks, each with 2 threads: a rank of one thread writes at once.
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
@@ -81,7 +81,7 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 2);
   run_into("background", true);
   run_into("foreground", false);
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
