@@ -2,7 +2,7 @@
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/postprocess/output_writer.h>
 #include <vpcontact/postprocess/resumed_field_outputs.h>
-#include <vpcontact/postprocess/vtu_cell_data.h>
+#include <vpcontact/postprocess/vtu_piece.h>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/utilities.h>
@@ -205,9 +205,8 @@ namespace VPContact
     solve_floor      = prm.get_bool("Report solve floor");
     in_background    = prm.get_bool("Write fields in background");
     prm.leave_subsection();
-    // deal.II compresses .vtu files as much as it can by default, which
-    // costs more than the rest of the output; fast compression is almost
-    // as small.
+    // The .pvtu records say nothing of the compression; the pieces are
+    // compressed at zlib's fastest level (VtuPiece::write()).
     vtk_flags.compression_level = DataOutBase::VtkFlags::best_speed;
     VPContactCheckParameter(!output_directory.empty(),
                             "Output/Directory",
@@ -336,11 +335,11 @@ namespace VPContact
 
   template <int dim>
   void
-  OutputWriter<dim>::write_fields(FieldPatches<dim> &&fields,
-                                  const unsigned int  n,
-                                  const double        time,
-                                  const bool          steps_follow,
-                                  const MPI_Comm      communicator)
+  OutputWriter<dim>::write_fields(FieldPiece       &&fields,
+                                  const unsigned int n,
+                                  const double       time,
+                                  const bool         steps_follow,
+                                  const MPI_Comm     communicator)
   {
     finish_field_output(communicator);
 
@@ -371,7 +370,6 @@ namespace VPContact
       = in_background && steps_follow && MultithreadInfo::n_threads() > 1;
     field_writer.start(std::move(fields),
                        output_directory + "/" + own_piece,
-                       vtk_flags,
                        background);
     if (!background)
       finish_field_output(communicator);

@@ -1,14 +1,15 @@
 // The simulator's output: cell-averaged stresses, the statistics row of every
 // step, the screen, and the fields for ParaView.
 #include <vpcontact/input/input_error.h>
+#include <vpcontact/linear_algebra/ghost_exchange.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/material/stress_measures.h>
+#include <vpcontact/postprocess/piece_builder.h>
 #include <vpcontact/simulator/simulator.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
-#include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <cstdio>
@@ -35,94 +36,6 @@ namespace VPContact
               "stress_xz",
               "stress_yz"};
     }
-
-    // DataOut, with the patches it built handed out, so that a FieldWriter
-    // can write them. They are moved out rather than copied: a copy
-    // allocated every cell's patch data once more.
-    template <int dim>
-    class PatchDataOut : public DataOut<dim>
-    {
-    public:
-      std::vector<DataOutBase::Patch<dim, dim>>
-      release_patches()
-      {
-        return std::move(this->patches);
-      }
-
-      /// The names of the fields and which of them form vectors, known once
-      /// the vectors are added.
-      std::vector<std::string>
-      field_names() const
-      {
-        return this->get_dataset_names();
-      }
-      VectorRanges
-      vector_ranges() const
-      {
-        return this->get_nonscalar_data_ranges();
-      }
-    };
-
-
-
-    // What the fields of one output are built from: a DataOut and the
-    // postprocessors it refers to, owned here, so that the patches can be
-    // built in the background while the simulator's vectors change (see
-    // Simulator::write_fields()). The vectors are not kept: DataOut copies
-    // each one it is given, with the ghost entries its cells read, as it
-    // is added (deal.II 9.4, DataOut_DoFData::add_data_vector()).
-    template <int dim>
-    struct FieldSources
-    {
-      PatchDataOut<dim>                                          data_out;
-      std::vector<std::shared_ptr<const DataPostprocessor<dim>>> readers;
-    };
-
-
-
-    // The cell fields, added to the DataOut of @p sources: the cell
-    // averages of the stress (its von Mises norm and its @p components)
-    // and the rank @p owner that owns the cells.
-    template <int dim>
-    void
-    add_cell_fields(FieldSources<dim>                 &sources,
-                    const Vector<double>              &von_mises,
-                    const std::vector<Vector<double>> &components,
-                    const types::subdomain_id          owner)
-    {
-      sources.data_out.add_data_vector(von_mises, "von_mises");
-      const auto names_of_stress = stress_component_names<dim>();
-      for (unsigned int c = 0; c < components.size(); ++c)
-        sources.data_out.add_data_vector(components[c], names_of_stress[c]);
-      Vector<double> subdomain(von_mises.size());
-      subdomain = owner;
-      sources.data_out.add_data_vector(subdomain, "subdomain");
-    }
-
-
-
-    // The nodal fields of a physics object, added to the DataOut of
-    // @p sources in the blocks of @p layout (the solution's): DataOut takes
-    // a vector whose owned entries are not one range on each rank only in
-    // blocks that each have one.
-    template <int dim>
-    void
-    add_nodal_fields(std::vector<NodalField<dim>> &&fields,
-                     const LA::MPI::BlockVector    &layout,
-                     FieldSources<dim>             &sources)
-    {
-      if (fields.empty())
-        return;
-      LA::MPI::BlockVector blocks(layout);
-      for (NodalField<dim> &field : fields)
-        {
-          copy_into_blocks(field.values, blocks);
-          sources.readers.push_back(std::move(field.postprocessor));
-          sources.data_out.add_data_vector(blocks, *sources.readers.back());
-        }
-    }
-
-
 
   } // namespace
 
@@ -347,13 +260,13 @@ namespace VPContact
                                const Vector<double>              &von_mises,
                                const std::vector<Vector<double>> &components)
   {
-    // The solution: displacement (a vector) and, in damage scenes, zeta;
-    // the stresses per cell, and their ranks. DataOut copies them here,
-    // where the ranks exchange ghost values together; its patches
-    // (FEValues on every cell, the larger cost) are built with the write,
-    // in the background: the mesh does not change before it is waited for.
-    const auto               sources  = std::make_shared<FieldSources<dim>>();
-    PatchDataOut<dim>       &data_out = sources->data_out;
+    // The solution: displacement (a vector) and, in damage scenes, zeta,
+    // at the vertices; the physics objects' nodal fields (the contact
+    // nodes' status and traction); the stresses per cell and their ranks.
+    // The piece copies them here, where the ranks exchange ghost values
+    // together, and is compressed and written with the write.
+    const LA::MPI::Vector   &solution = displacement_problem.ghosted_solution();
+    PieceBuilder<dim>        piece(dof_handler, solution);
     std::vector<std::string> names(dim, "displacement");
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
@@ -365,37 +278,26 @@ namespace VPContact
           interpretation.push_back(
             DataComponentInterpretation::component_is_scalar);
         }
-    data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(displacement_problem.solution_blocks(),
-                             names,
-                             DataOut<dim>::type_dof_data,
-                             interpretation);
+    piece.add_point_fields(solution, names, interpretation);
 
-    // The physics objects' own fields (the contact nodes' status and
-    // traction).
+    LA::MPI::Vector ghosted(solution);
+    GhostExchange   ghosts;
     for (const Physics<dim> *object : physics)
-      add_nodal_fields(object->output_fields(locally_owned_dofs),
-                       displacement_problem.solution_blocks(),
-                       *sources);
+      for (const NodalField<dim> &field :
+           object->output_fields(locally_owned_dofs))
+        {
+          ghosts.copy(field.values, ghosted);
+          piece.add_point_fields(ghosted, *field.postprocessor);
+        }
 
-    add_cell_fields(*sources,
-                    von_mises,
-                    components,
-                    mesh->locally_owned_subdomain());
-    // The cell fields come last: von Mises, the stress components and the
-    // owner, written as cell data.
-    FieldPatches<dim> fields;
-    fields.names                 = data_out.field_names();
-    const std::size_t n_by_cells = components.size() + 2;
-    fields.cell_names.assign(fields.names.end() - n_by_cells,
-                             fields.names.end());
-    fields.names.resize(fields.names.size() - n_by_cells);
-    fields.vector_ranges = data_out.vector_ranges();
-    fields.build = [sources](std::vector<DataOutBase::Patch<dim, dim>> &p) {
-      sources->data_out.build_patches();
-      p = sources->data_out.release_patches();
-    };
-    output_writer.write_fields(std::move(fields),
+    piece.add_cell_field(von_mises, "von_mises");
+    const auto names_of_stress = stress_component_names<dim>();
+    for (unsigned int c = 0; c < components.size(); ++c)
+      piece.add_cell_field(components[c], names_of_stress[c]);
+    Vector<double> subdomain(von_mises.size());
+    subdomain = mesh->locally_owned_subdomain();
+    piece.add_cell_field(subdomain, "subdomain");
+    output_writer.write_fields(piece.take(),
                                n,
                                time_discretization.time(n),
                                n < time_discretization.n_steps(),

@@ -66,8 +66,8 @@ check_stopped_run() {
   echo "temporary files left: $(find out -name '*.tmp' | wc -l)"
 }
 
-# Fields only, no checkpoints, on a disk of 100 kB: a field output is the
-# write that fails.
+# Fields only, no checkpoints, on a disk of 100 kB: a field output (a piece,
+# its .pvtu record or the .pvd record) is the write that fails.
 mkdir -p "$work/tiny"
 mount -t tmpfs -o size=100k tmpfs "$work/tiny" || exit 1
 sed 's/Every steps = 5/Every steps = 0/' "$here/scene.prm" \
@@ -77,7 +77,7 @@ cd "$work/tiny" || exit 1
 status=$?
 echo "--- fields only, disk of 100 kB"
 check_stopped_run $status
-grep -q 'solution_' screen.log && echo "the message names a field output file"
+grep -qE 'solution(_[0-9]+\.|\.pvd)' screen.log && echo "the message names a field output file"
 
 # Fields and checkpoints on a disk of 600 kB: the checkpoint of step 10
 # does not fit with the margin the program asks for.

@@ -48,6 +48,20 @@ ok &= not misplaced
 vm = cells.GetArray("von_mises").GetRange() if cells.GetArray("von_mises") else (0, 0)
 print(f"von_mises range {vm[0]:.4g} .. {vm[1]:.4g}, positive: {'yes' if vm[1] > 0 else 'NO'}")
 ok &= vm[1] > 0
+# Each vertex once (9 x 9 of the 8 x 8 cells), and every cell's vertices in
+# VTK's order: VTK's areas of the cells positive, and their sum the body's.
+once = grid.GetNumberOfPoints() == 81
+print(f"points: {grid.GetNumberOfPoints()} for {grid.GetNumberOfCells()} cells, each vertex once: {'yes' if once else 'NO'}")
+sizes = vtk.vtkCellSizeFilter()
+sizes.SetInputData(grid)
+sizes.Update()
+area = sizes.GetOutput().GetCellData().GetArray("Area")
+areas = [area.GetValue(i) for i in range(area.GetNumberOfTuples())]
+b = grid.GetBounds()
+box = (b[1] - b[0]) * (b[3] - b[2])
+oriented = min(areas) > 0 and abs(sum(areas) - box) < 1e-6 * box
+print(f"cell areas positive and summing to the body's: {'yes' if oriented else 'NO'}")
+ok &= once and oriented
 raise SystemExit(0 if ok else 1)
 PY
 fi

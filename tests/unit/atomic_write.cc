@@ -1,10 +1,7 @@
 // Unit test: write_file_atomically() with a writer function. A write that
 // completes replaces the file; one whose writer throws leaves the previous
 // file as it was, removes its temporary file and passes the exception on.
-// write_with_cell_data() puts the cell data before the piece's </Piece> and
-// refuses a text without one (which then leaves nothing behind either).
 #include <vpcontact/postprocess/output_writer.h>
-#include <vpcontact/postprocess/vtu_cell_data.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -64,24 +61,5 @@ main()
     }
   report("after a failed writer", file);
 
-  VPContact::write_file_atomically(file, [](std::ostream &out) {
-    VPContact::write_with_cell_data(out,
-                                    "<Piece><Points/></Piece>\n</VTKFile>",
-                                    "<CellData/>");
-  });
-  report("with cell data", file);
-
-  try
-    {
-      VPContact::write_file_atomically(file, [](std::ostream &out) {
-        VPContact::write_with_cell_data(out, "<Points/>", "<CellData/>");
-      });
-      std::cout << "no exception" << std::endl;
-    }
-  catch (const dealii::ExceptionBase &)
-    {
-      std::cout << "a piece without </Piece> is refused" << std::endl;
-    }
-  report("after the refusal", file);
   std::filesystem::remove_all(folder);
 }

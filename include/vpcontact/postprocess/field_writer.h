@@ -3,10 +3,11 @@
 #ifndef vpcontact_field_writer_h
 #define vpcontact_field_writer_h
 
+#include <vpcontact/postprocess/vtu_piece.h>
+
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 
-#include <functional>
 #include <future>
 #include <string>
 #include <tuple>
@@ -25,38 +26,32 @@ namespace VPContact
                DataComponentInterpretation::DataComponentInterpretation>>;
 
   /**
-   * The patches of one field output and the names of its fields (see
-   * VertexPatches): what a .vtu file is made of, without references to the
-   * vectors it was built from, so that it can be written while those
-   * vectors change.
+   * The .vtu piece of one field output and the names of its fields, as the
+   * .pvtu record lists them: what a piece file is made of, without
+   * references to the vectors it was taken from, so that it can be written
+   * while those vectors change.
    */
-  template <int dim>
-  struct FieldPatches
+  struct FieldPiece
   {
-    std::vector<DataOutBase::Patch<dim, dim>> patches;
-    /// The names of the point fields.
+    VtuPiece piece;
+    /// The names of the point fields, one per component (a vector's name
+    /// repeated), and which of them form vectors, as deal.II's DataOut
+    /// names them.
     std::vector<std::string> names;
     VectorRanges             vector_ranges;
-    /// The names of the cell fields: the last data rows of the patches,
-    /// written as cell data (see take_cell_data()).
+    /// The names of the cell fields.
     std::vector<std::string> cell_names;
-    /// If set, fills the patches where the piece is written (in the
-    /// background, with what it owns), before they are written: building
-    /// them costs more than writing them.
-    std::function<void(std::vector<DataOutBase::Patch<dim, dim>> &)> build;
   };
 
   /**
-   * Builds (if FieldPatches::build is set), compresses and writes the
-   * .vtu piece of one field output. In a thread of its own, this overlaps
-   * with the next steps, as ASPECT's "Write in background thread" does. Not
-   * a task of deal.II's threads (TBB): a thread that waits for the end of a
-   * parallel loop runs other tasks of its arena meanwhile, so the loops of
-   * the next steps (right-hand side, stress update, DataOut) could take up
-   * the whole write and wait for it. The thread runs at the lowest
-   * scheduling priority and builds the patches alone (not with TBB's
-   * workers), so that it takes only the cores the steps leave idle. The
-   * piece is written through a
+   * Compresses and writes the .vtu piece of one field output. In a thread
+   * of its own, this overlaps with the next steps, as ASPECT's "Write in
+   * background thread" does. Not a task of deal.II's threads (TBB): a
+   * thread that waits for the end of a parallel loop runs other tasks of
+   * its arena meanwhile, so the loops of the next steps (right-hand side,
+   * stress update) could take up the whole write and wait for it. The
+   * thread runs at the lowest scheduling priority, so that it takes only
+   * the cores the steps leave idle. The piece is written through a
    * temporary file and a rename, so that it is on disk either whole or not
    * at all.
    *
@@ -72,15 +67,14 @@ namespace VPContact
     ~FieldWriter();
 
     /**
-     * Write @p fields to the file @p filename with @p flags: in a thread
+     * Write @p fields to the file @p filename: in a thread
      * (std::async) if @p in_background, else before returning (a failure is
      * still reported by wait()).
      */
     void
-    start(FieldPatches<dim>          &&fields,
-          const std::string           &filename,
-          const DataOutBase::VtkFlags &flags,
-          const bool                   in_background);
+    start(FieldPiece       &&fields,
+          const std::string &filename,
+          const bool         in_background);
 
     /// Whether a write was started and not yet waited for.
     bool

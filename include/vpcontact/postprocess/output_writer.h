@@ -84,11 +84,11 @@ namespace VPContact
      * before it is finished first.
      */
     void
-    write_fields(FieldPatches<dim> &&fields,
-                 const unsigned int  n,
-                 const double        time,
-                 const bool          steps_follow,
-                 const MPI_Comm      communicator);
+    write_fields(FieldPiece       &&fields,
+                 const unsigned int n,
+                 const double       time,
+                 const bool         steps_follow,
+                 const MPI_Comm     communicator);
 
     /**
      * Wait for the pieces of the last field output on every rank, then
@@ -185,7 +185,7 @@ namespace VPContact
     bool         solve_floor         = false;
     bool         in_background       = true;
 
-    /// The flags of every .vtu and .pvtu file.
+    /// The flags of the .pvtu records.
     DataOutBase::VtkFlags vtk_flags;
 
     /// The claim on the output folder (rank 0), from prepare_directory().
