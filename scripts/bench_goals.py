@@ -26,13 +26,14 @@ def slower_reasons(slower):
                  "more and the displacement solve, the step's largest "
                  "phase, much less.")
     if "output" in named:
-        text += (" The output: 211b1ab built its patches from the nodal "
-                 "values itself; HEAD gives the fields to deal.II's "
-                 "DataOut, which at every written step copies each field "
-                 "vector with its ghost entries (a partitioner and a ghost "
-                 "exchange per vector) before the patches are built in the "
-                 "background, and on 2 ranks, one core each, that copy is "
-                 "not hidden.")
+        text += (" The output: HEAD reads the nodal values at the "
+                 "vertices into a piece of its own (each vertex once) "
+                 "and compresses and writes it in a thread beside the "
+                 "steps where the rank has several threads; on 2 ranks, "
+                 "one core each, it writes at once, so that the *output* "
+                 "phase holds the compression and the write, which "
+                 "211b1ab's writer thread took from the other phases of "
+                 "the rank's only core.")
     if " other " in named:
         text += (" *Other* is the step's work outside the named phases, "
                  "which the program's timer does not split: the damage "
@@ -176,12 +177,10 @@ def goals(best, sizes, algebras, every=None):
          "As on 1 rank."),
         ("peak memory of CG + AMG at most the peer's, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["mem_all_mb"], g1["mem_all_mb"]))),
-         "The peak comes at the steps that write fields: deal.II's "
-         "DataOut builds a patch for every cell (its own copy of the "
-         "cell's vertices with every field on each) and write_vtu() a "
-         "table of them, on top of what the run holds between outputs; "
-         "without field output the peak comes while ML builds its "
-         "hierarchy (its product A P, allocated at an estimated size and "
+         "The peak comes at the steps that estimate the error, whose "
+         "buffers (the moments and point values of every cell, 2 x 32 "
+         "doubles per cell in 2D) come on top of ML's hierarchy (its "
+         "product A P, allocated at an estimated size and "
          "then copied). Besides, the mesh (one p4est tree per cell "
          "of the scene's coarse mesh), the fields at the quadrature "
          "points and the points and entry positions kept per cell stay "
