@@ -56,8 +56,7 @@ namespace VPContact
 
 
 
-  template <int dim>
-  FieldWriter<dim>::~FieldWriter()
+  FieldWriter::~FieldWriter()
   {
     // A run that stops with an error leaves its last piece whole: wait
     // for it. What went wrong with it no longer matters then.
@@ -67,11 +66,10 @@ namespace VPContact
 
 
 
-  template <int dim>
   void
-  FieldWriter<dim>::start(FieldPiece       &&fields,
-                          const std::string &filename,
-                          const bool         in_background)
+  FieldWriter::start(FieldPiece       &&fields,
+                     const std::string &filename,
+                     const bool         in_background)
   {
     Assert(!pending(), ExcMessage("wait() for the previous write first"));
     // The task owns the piece. It holds the piece through a shared pointer, so
@@ -113,18 +111,16 @@ namespace VPContact
 
 
 
-  template <int dim>
   bool
-  FieldWriter<dim>::pending() const
+  FieldWriter::pending() const
   {
     return started;
   }
 
 
 
-  template <int dim>
   std::string
-  FieldWriter<dim>::wait()
+  FieldWriter::wait()
   {
     if (!started)
       return "";
@@ -136,6 +132,4 @@ namespace VPContact
 
 
 
-  template class FieldWriter<2>;
-  template class FieldWriter<3>;
 } // namespace VPContact

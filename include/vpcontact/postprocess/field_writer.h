@@ -59,7 +59,6 @@ namespace VPContact
    * the background is reported by wait(), not thrown there, so that the
    * caller can tell every MPI rank.
    */
-  template <int dim>
   class FieldWriter
   {
   public:

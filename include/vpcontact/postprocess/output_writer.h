@@ -191,7 +191,7 @@ namespace VPContact
     /// The claim on the output folder (rank 0), from prepare_directory().
     std::unique_ptr<FolderLock> lock;
 
-    FieldWriter<dim>             field_writer;
+    FieldWriter                  field_writer;
     std::optional<PendingOutput> pending_output;
 
     /// (time, .pvtu file) of every field output so far, for the .pvd record.
