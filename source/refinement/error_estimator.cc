@@ -145,25 +145,24 @@ namespace VPContact
 
   template <int dim>
   template <bool damage>
-  double
-  ErrorEstimator<dim>::first_pass(const std::size_t           i,
-                                  const double               *entries,
-                                  const ViscoplasticLaw<dim> &law,
-                                  const bool                  initial)
+  void
+  ErrorEstimator<dim>::point_values(const std::size_t        i,
+                                    const double            *entries,
+                                    double                  *f,
+                                    SymmetricTensor<2, dim> *strain,
+                                    double                  *zeta) const
   {
-    // On cell i: the discrete fields at the points (kept for the second
-    // pass), int_K phi_a q_h for every node a and component q of the
-    // recovered fields, and the squared norm of G_n - G_0, which needs
-    // nothing recovered (at n = 0, G_0 is stored instead).
+    // The fields the estimate recovers at the points of cell i, component
+    // by component (f[q * n_c + c]): the stress of the history, the strain
+    // and the damage gradient of the solution. Both passes compute them:
+    // kept from one pass to the other they would take 16 doubles per point
+    // of a 2D damage scene, more than the stress history and the largest
+    // part of the estimate's memory, to save the second pass a gather of
+    // the nodal values and a product with the shape gradients.
     constexpr unsigned int n_c    = n_fields<dim, damage>;
     const auto             points = history->get_data((*cells)[i]);
-    const auto             rates  = history->initial_rates((*cells)[i]);
-    const auto             JxW    = history->JxW((*cells)[i]);
-    std::array<SymmetricTensor<2, dim>, max_points> strain;
-    std::array<Tensor<1, dim>, max_points>          gradient;
-    std::array<double, max_points>                  zeta;
-    evaluate_fields<damage>(i, entries, &strain[0], &gradient[0], &zeta[0]);
-    double *const f = &point_values[i * n_q * n_c];
+    std::array<Tensor<1, dim>, max_points> gradient;
+    evaluate_fields<damage>(i, entries, strain, &gradient[0], zeta);
     for (unsigned int q = 0; q < n_q; ++q)
       for (unsigned int c = 0; c < n_tensor<dim>; ++c)
         {
@@ -172,6 +171,29 @@ namespace VPContact
           if (damage && c < dim)
             f[q * n_c + 2 * n_tensor<dim> + c] = gradient[q][c];
         }
+  }
+
+
+
+  template <int dim>
+  template <bool damage>
+  double
+  ErrorEstimator<dim>::first_pass(const std::size_t           i,
+                                  const double               *entries,
+                                  const ViscoplasticLaw<dim> &law,
+                                  const bool                  initial)
+  {
+    // On cell i: int_K phi_a q_h for every node a and component q of the
+    // recovered fields, and the squared norm of G_n - G_0, which needs
+    // nothing recovered (at n = 0, G_0 is stored instead).
+    constexpr unsigned int n_c    = n_fields<dim, damage>;
+    const auto             points = history->get_data((*cells)[i]);
+    const auto             rates  = history->initial_rates((*cells)[i]);
+    const auto             JxW    = history->JxW((*cells)[i]);
+    std::array<SymmetricTensor<2, dim>, max_points> strain;
+    std::array<double, max_points>                  zeta;
+    double                                          f[max_points * n_c];
+    point_values<damage>(i, entries, f, &strain[0], &zeta[0]);
     double *const m = &moments[i * n_nodes * n_c];
     std::fill(m, m + n_nodes * n_c, 0.);
     double     time      = 0;
@@ -310,14 +332,17 @@ namespace VPContact
   template <int dim>
   template <bool damage>
   void
-  ErrorEstimator<dim>::second_pass(const std::size_t i)
+  ErrorEstimator<dim>::second_pass(const std::size_t i, const double *entries)
   {
     // On cell i: the squared distances between the recovered fields,
-    // sum_a N_a(x_q) v_a, and the discrete ones kept by the first pass, and
-    // the cell's indicator (each cell writes only its own entries).
-    constexpr unsigned int    n_c    = n_fields<dim, damage>;
-    const auto                JxW    = history->JxW((*cells)[i]);
-    const double *const       f      = &point_values[i * n_q * n_c];
+    // sum_a N_a(x_q) v_a, and the discrete ones, and the cell's indicator
+    // (each cell writes only its own entries).
+    constexpr unsigned int n_c = n_fields<dim, damage>;
+    const auto             JxW = history->JxW((*cells)[i]);
+    std::array<SymmetricTensor<2, dim>, max_points> point_strain;
+    std::array<double, max_points>                  point_zeta;
+    double                                          f[max_points * n_c];
+    point_values<damage>(i, entries, f, &point_strain[0], &point_zeta[0]);
     const double *const       values = recovered.begin();
     const unsigned int *const nodes  = &node_locals[i * n_nodes];
     double                    stress = 0, strain = 0, gradient = 0;
@@ -386,7 +411,7 @@ namespace VPContact
       cells->size(),
       [&](const std::size_t begin, const std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
-          second_pass<damage>(i);
+          second_pass<damage>(i, entries);
       },
       64);
   }

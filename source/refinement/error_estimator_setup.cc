@@ -231,7 +231,6 @@ namespace VPContact
     if (!moments)
       {
         moments.reset(new double[cells->size() * n_nodes * n_components]);
-        point_values.reset(new double[cells->size() * n_q * n_components]);
         norms.resize(cells->size());
       }
   }
@@ -243,7 +242,6 @@ namespace VPContact
   ErrorEstimator<dim>::release_step_buffers()
   {
     moments.reset();
-    point_values.reset();
     std::vector<CellNorms>().swap(norms);
   }
 

@@ -178,6 +178,15 @@ namespace VPContact
                     SymmetricTensor<2, dim> *strain,
                     Tensor<1, dim>          *gradient,
                     double                  *zeta) const;
+    /// The recovered fields at the points of cell @p i into @p f, and the
+    /// strain and damage there (see the definition).
+    template <bool damage>
+    void
+    point_values(const std::size_t        i,
+                 const double            *entries,
+                 double                  *f,
+                 SymmetricTensor<2, dim> *strain,
+                 double                  *zeta) const;
     template <bool damage>
     double
     first_pass(const std::size_t           i,
@@ -194,7 +203,7 @@ namespace VPContact
     project_to_nodes();
     template <bool damage>
     void
-    second_pass(const std::size_t i);
+    second_pass(const std::size_t i, const double *entries);
     template <bool damage>
     void
     passes(const unsigned int          n,
@@ -254,13 +263,11 @@ namespace VPContact
 
     /// Per step, kept between the passes: the cells' moments int_K phi_a
     /// q_h (component c of node a of cell i at (i * n_nodes + a) *
-    /// n_components + c), the discrete fields at every point in the same
-    /// order of components ((i * n_q + q) * n_components + c), and every
-    /// cell's norms. They take 2 * 32 doubles per cell of a 2D damage
-    /// scene, so they are held from one step to the next only when every
-    /// step is estimated (see allocate_step_buffers()).
+    /// n_components + c) and every cell's norms. The moments take 32
+    /// doubles per cell of a 2D damage scene, so they are held from one
+    /// step to the next only when every step is estimated (see
+    /// allocate_step_buffers()).
     std::unique_ptr<double[]> moments;
-    std::unique_ptr<double[]> point_values;
     std::vector<CellNorms>    norms;
 
     ErrorEstimate largest_sum, largest_part;
