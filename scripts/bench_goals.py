@@ -178,14 +178,14 @@ def goals(best, sizes, algebras, every=None):
         ("peak memory of CG + AMG at most the peer's, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["mem_all_mb"], g1["mem_all_mb"]))),
          "The peak comes at the steps that estimate the error, whose "
-         "buffers (the moments and point values of every cell, 2 x 32 "
-         "doubles per cell in 2D) come on top of ML's hierarchy (its "
-         "product A P, allocated at an estimated size and "
-         "then copied). Besides, the mesh (one p4est tree per cell "
-         "of the scene's coarse mesh), the fields at the quadrature "
-         "points and the points and entry positions kept per cell stay "
-         "for the whole run (the estimate's buffers only while it "
-         "estimates, where it skips steps); with PETSc a copy of the "
+         "moments (32 doubles per cell in 2D with damage) come on top of "
+         "ML's hierarchy (its product A P, allocated at an estimated size "
+         "and then copied). For the whole run the program holds the mesh "
+         "(deal.II's cells of every level, p4est's forest, the "
+         "DoFHandler's indices), the matrix and its sparsity graph, the "
+         "fields at the quadrature points, the points and entry positions "
+         "kept per cell, and the damage matrix in the forms its solver, "
+         "its product and its assembly use; with PETSc a copy of the "
          "matrix in PETSc's format comes on top. The peer holds one PETSc "
          "matrix and GAMG's hierarchy."),
         ("CG + AMG speed-up from 1 to 2 ranks at least 1.7",
