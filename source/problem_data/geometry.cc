@@ -35,21 +35,6 @@ namespace VPContact
       return s;
     }
 
-    // How often every one of @p subdivisions can be halved: the L of
-    // Geometry::base_level().
-    unsigned int
-    common_halvings(const std::vector<unsigned int> &subdivisions)
-    {
-      unsigned int levels = 0;
-      while (std::all_of(subdivisions.begin(),
-                         subdivisions.end(),
-                         [levels](const unsigned int n) {
-                           return n > 0 && n % (2u << levels) == 0;
-                         }))
-        ++levels;
-      return levels;
-    }
-
     // The position of @p p, in the box [lower, upper], on a Z-order
     // (Morton) curve: the bits of its coordinates, scaled to 21-bit
     // integers, interleaved. Points close on the curve are close in space.
@@ -247,7 +232,7 @@ namespace VPContact
   Geometry<dim>::create_mesh(parallel::TriangulationBase<dim> &triangulation)
   {
     create_coarse_mesh(triangulation);
-    triangulation.refine_global(base_level() + n_global_refinements);
+    triangulation.refine_global(n_global_refinements);
   }
 
 
@@ -277,17 +262,11 @@ namespace VPContact
         if (simplex)
           create_simplex_box(triangulation);
         else
-          {
-            // The box of Subdivisions, base_level() levels coarser.
-            std::vector<unsigned int> coarse(subdivisions);
-            for (unsigned int &n : coarse)
-              n >>= base_level();
-            GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                      coarse,
-                                                      lower_corner,
-                                                      upper_corner,
-                                                      true);
-          }
+          GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                    subdivisions,
+                                                    lower_corner,
+                                                    upper_corner,
+                                                    true);
       }
     else
       {
@@ -496,15 +475,6 @@ namespace VPContact
   Geometry<dim>::global_refinements() const
   {
     return n_global_refinements;
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  Geometry<dim>::base_level() const
-  {
-    return shape == Shape::box && !simplex ? common_halvings(subdivisions) : 0;
   }
 
 

@@ -80,23 +80,6 @@ namespace VPContact
     global_refinements() const;
 
     /**
-     * The level that the cells of the box of Geometry/Subdivisions have in
-     * the mesh: the coarse mesh of a box of quadrilaterals (hexahedra) is
-     * the box divided by the largest power of two 2^L that divides every
-     * subdivision, and create_mesh() refines it L times more than Global
-     * refinements say. Every rank holds the whole coarse mesh, each coarse
-     * cell a tree of p4est's forest; a 512 x 512 box as 262,144 trees takes
-     * more memory and set-up time than the one tree refined 9 times, which
-     * also orders the cells along one space-filling curve, so that the
-     * ranks' parts are compact. Levels the user gives (Mesh
-     * refinement/Maximum level, Minimum level) count from the box of
-     * Subdivisions; MeshRefinement adds this level. 0 for a mesh file or a
-     * box of simplices.
-     */
-    unsigned int
-    base_level() const;
-
-    /**
      * The largest number of cells of a mesh of the run (later refinement
      * cycles included) relative to the mesh after Global refinements, for
      * the memory check of create_coarse_mesh(), and the entries that set it

@@ -37,13 +37,11 @@ namespace VPContact
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// @p output_directory is the run's (a reference is written there);
-    /// @p base_level: see MeshRefinement::parse_parameters().
+    /// @p output_directory is the run's (a reference is written there).
     void
     parse_parameters(ParameterHandler         &prm,
                      const std::string        &output_directory,
-                     const TimeDiscretization &time,
-                     const unsigned int        base_level);
+                     const TimeDiscretization &time);
 
     const MeshRefinement<dim> &
     refinement() const;
