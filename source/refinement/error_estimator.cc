@@ -431,8 +431,8 @@ namespace VPContact
     //
     // The buffers of the passes stay from one step to the next only where
     // every step is estimated; a run that estimates every tenth step holds
-    // their memory (more than its stress history) only while it estimates,
-    // and pays for the allocation once per estimate.
+    // their memory (the moments, 32 doubles per cell in 2D with damage) only
+    // while it estimates, and pays for the allocation once per estimate.
     allocate_step_buffers();
     if (with_damage)
       passes<true>(n, entries, law);
