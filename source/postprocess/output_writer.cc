@@ -206,7 +206,8 @@ namespace VPContact
     in_background    = prm.get_bool("Write fields in background");
     prm.leave_subsection();
     // The .pvtu records say nothing of the compression; the pieces are
-    // compressed at zlib's fastest level (VtuPiece::write()).
+    // compressed at zlib's fastest level, noisy fields in its run-length
+    // mode (VtuPiece::write()).
     vtk_flags.compression_level = DataOutBase::VtkFlags::best_speed;
     VPContactCheckParameter(!output_directory.empty(),
                             "Output/Directory",
