@@ -241,10 +241,10 @@ namespace VPContact
 
 
   unsigned int
-  DamageRegionSolver::solve_eisenstat(const LA::MPI::Vector &b_vector,
-                                      LA::MPI::Vector       &x_vector,
-                                      const double           tolerance,
-                                      const unsigned int     max_iterations)
+  DamageRegionSolver::solve_eisenstat(const double      *b,
+                                      double            *x,
+                                      const double       tolerance,
+                                      const unsigned int max_iterations)
   {
     // With C = D + L and P = C D^{-1} C^T (on F), PCG for K x = b is CG
     // for K^ = C^{-1} K C^{-T} in x^ = C^T x with the preconditioner D
@@ -256,8 +256,7 @@ namespace VPContact
     // sweep's pass over L (forward_sweep()). The unknown is the change
     // from the start vector, x = x_0 + C^{-T} x^.
     mask_diagonal();
-    double      *x       = x_vector.begin();
-    const double b_norm2 = eisenstat_start(b_vector.begin(), x);
+    const double b_norm2 = eisenstat_start(b, x);
     if (b_norm2 == 0.)
       {
         for (const unsigned int i : free_nodes)
@@ -309,7 +308,7 @@ namespace VPContact
     // r = b - K x_0 on F (region indices), with the product of the other
     // preconditioners; returns |b|^2 over F on every rank.
     const double b_norm2 = start_product(b, x);
-    double      *p       = direction.begin();
+    double      *p       = direction.data();
     for (unsigned int k = 0; k < region.size(); ++k)
       {
         const unsigned int i = region[k];

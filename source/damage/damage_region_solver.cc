@@ -1,7 +1,6 @@
 // CG for the damage problem on the free nodes, with (M)IC(0) of a region
 // around them (see damage_region_solver.h).
 #include <vpcontact/damage/damage_region_solver.h>
-#include <vpcontact/damage/support_product.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
@@ -19,88 +18,89 @@ namespace VPContact
                                  const MPI_Comm          communicator_in,
                                  const Preconditioner    kind_in)
   {
+    // The local storage of an owned vector lists the owned indices in
+    // ascending order, as the row map of the matrix does, so a row's local
+    // index is its owned position.
+    const Epetra_CrsMatrix &K = matrix.trilinos_matrix();
+    AssertThrow(static_cast<unsigned int>(K.NumMyRows()) == owned.n_elements(),
+                ExcInternalError());
+    std::vector<unsigned int>            starts(1, 0);
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    starts.reserve(owned.n_elements() + 1);
+    columns.reserve(K.NumMyNonzeros());
+    values.reserve(K.NumMyNonzeros());
+    for (unsigned int i = 0; i < owned.n_elements(); ++i)
+      {
+        int     n_entries = 0;
+        double *row       = nullptr;
+        int    *indices   = nullptr;
+        K.ExtractMyRowView(i, n_entries, row, indices);
+        for (int e = 0; e < n_entries; ++e)
+          {
+            columns.push_back(
+              TrilinosWrappers::global_index(K.ColMap(), indices[e]));
+            values.push_back(row[e]);
+          }
+        starts.push_back(columns.size());
+      }
+    initialize(starts, columns, values, owned, communicator_in, kind_in);
+  }
+
+
+
+  void
+  DamageRegionSolver::initialize(
+    const std::vector<unsigned int>            &starts,
+    const std::vector<types::global_dof_index> &columns,
+    const std::vector<double>                  &values,
+    const IndexSet                             &owned,
+    const MPI_Comm                              communicator_in,
+    const Preconditioner                        kind_in)
+  {
     communicator  = communicator_in;
     kind          = kind_in;
     serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
     n_owned       = owned.n_elements();
-    // The ghosted layout the products read: the owned entries and every
-    // column of the owned rows.
-    const Epetra_CrsMatrix &K       = matrix.trilinos_matrix();
-    const IndexSet          columns = columns_of_owned_rows(matrix, owned);
-    direction.reinit(owned, communicator);
-    direction_ghosted.reinit(owned, columns, communicator);
-    importer = std::make_unique<Epetra_Import>(
-      direction_ghosted.trilinos_vector().Map(),
-      direction.trilinos_vector().Map());
+
+    // The ghosted layout the products read: the owned entries, then every
+    // other column of the owned rows, as deal.II's partitioner numbers
+    // them; the columns are kept as positions in it.
+    std::vector<types::global_dof_index> sorted(columns);
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    IndexSet ghosted(owned.size());
+    ghosted.add_indices(sorted.begin(), sorted.end());
+    ghosted.add_indices(owned);
     halo = std::make_shared<Utilities::MPI::Partitioner>(owned,
-                                                         columns,
+                                                         ghosted,
                                                          communicator);
+    const unsigned int n_ghosts = halo->n_ghost_indices();
     halo_owned.assign(n_owned, 0.);
     halo_send.assign(halo->n_import_indices(), 0.);
-    ghost_values.assign(halo->n_ghost_indices(), 0.);
+    ghost_values.assign(n_ghosts, 0.);
+    owned_of_ghosted.assign(n_owned + n_ghosts, -1);
+    ghost_of_ghosted.assign(n_owned + n_ghosts, 0);
+    for (unsigned int g = 0; g < n_owned + n_ghosts; ++g)
+      if (g < n_owned)
+        owned_of_ghosted[g] = g;
+      else
+        ghost_of_ghosted[g] = g - n_owned;
 
-    // The local storage of an owned vector lists the owned indices in
-    // ascending order, as the row map of the matrix does, so a row's local
-    // index is its owned position. The columns are translated from the
-    // matrix's column map to the ghosted vector's layout.
-    const Epetra_BlockMap &ghosted_map
-      = direction_ghosted.trilinos_vector().Map();
-    const std::vector<unsigned int> ghosted_of_column
-      = ghosted_positions_of_columns(matrix, ghosted_map);
-    owned_of_ghosted.assign(ghosted_map.NumMyElements(), -1);
-    ghost_of_ghosted.assign(ghosted_map.NumMyElements(), 0);
-    for (unsigned int g = 0; g < owned_of_ghosted.size(); ++g)
-      {
-        const types::global_dof_index index
-          = TrilinosWrappers::global_index(ghosted_map, g);
-        if (owned.is_element(index))
-          owned_of_ghosted[g] = owned.index_within_set(index);
-        else
-          ghost_of_ghosted[g] = halo->global_to_local(index) - n_owned;
-      }
-
-    AssertThrow(static_cast<unsigned int>(K.NumMyRows()) == n_owned,
-                ExcInternalError());
-    copy_owned_rows(K, ghosted_of_column);
+    row_start = starts;
+    value     = values;
+    column.resize(columns.size());
+    for (std::size_t e = 0; e < columns.size(); ++e)
+      column[e] = halo->global_to_local(columns[e]);
 
     is_free.assign(n_owned, false);
     free_nodes.clear();
     residual.assign(n_owned, 0.);
     preconditioned.assign(n_owned, 0.);
     product.assign(n_owned, 0.);
-    direction    = 0.;
+    direction.assign(n_owned + n_ghosts, 0.);
     region_valid = false;
     builds       = 0;
-  }
-
-
-
-  void
-  DamageRegionSolver::copy_owned_rows(
-    const Epetra_CrsMatrix          &K,
-    const std::vector<unsigned int> &ghosted_of_column)
-  {
-    // Reserved to the size, so that the copy holds no doubled capacity of
-    // push_back's growth for the rest of the run.
-    row_start.assign(1, 0);
-    row_start.reserve(n_owned + 1);
-    column.clear();
-    column.reserve(K.NumMyNonzeros());
-    value.clear();
-    value.reserve(K.NumMyNonzeros());
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        int     n_entries = 0;
-        double *values    = nullptr;
-        int    *indices   = nullptr;
-        K.ExtractMyRowView(i, n_entries, values, indices);
-        for (int e = 0; e < n_entries; ++e)
-          {
-            column.push_back(ghosted_of_column[indices[e]]);
-            value.push_back(values[e]);
-          }
-        row_start.push_back(column.size());
-      }
   }
 
 
@@ -454,7 +454,7 @@ namespace VPContact
   double
   DamageRegionSolver::start_product(const double *b, const double *x)
   {
-    double *p = direction.begin();
+    double *p = direction.data();
     for (const unsigned int i : free_nodes)
       p[i] = x[i];
     multiply_direction();
@@ -470,16 +470,21 @@ namespace VPContact
   DamageRegionSolver::multiply_direction()
   {
     // The search direction vanishes off F; on several ranks the products
-    // read it in the ghosted layout.
-    const double *p = direction.begin();
-    if (serial_layout)
-      return global_sum(vmult_free(product, p, p));
-    const int error
-      = direction_ghosted.trilinos_vector().Import(direction.trilinos_vector(),
-                                                   *importer,
-                                                   Insert);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    return global_sum(vmult_free(product, direction_ghosted.begin(), p));
+    // read its ghost entries too, sent by the ranks that own them.
+    double *const p = direction.data();
+    if (!serial_layout)
+      {
+        halo->export_to_ghosted_array_start<double>(
+          0,
+          make_array_view<const double>(p, p + n_owned),
+          make_array_view(halo_send),
+          make_array_view(p + n_owned, p + direction.size()),
+          halo_requests);
+        halo->export_to_ghosted_array_finish<double>(
+          make_array_view(p + n_owned, p + direction.size()),
+          halo_requests);
+      }
+    return global_sum(vmult_free(product, p, p));
   }
 
 
@@ -518,12 +523,26 @@ namespace VPContact
                                  const double                     tolerance,
                                  const unsigned int max_iterations)
   {
+    return solve_free(b_vector.begin(),
+                      x_vector.begin(),
+                      free,
+                      tolerance,
+                      max_iterations);
+  }
+
+
+
+  unsigned int
+  DamageRegionSolver::solve_free(const double                    *b,
+                                 double                          *x,
+                                 const std::vector<unsigned int> &free,
+                                 const double                     tolerance,
+                                 const unsigned int max_iterations)
+  {
     take_free_nodes(free);
     if (kind == Preconditioner::diagonal)
-      return solve_eisenstat(b_vector, x_vector, tolerance, max_iterations);
-    const double *b = b_vector.begin();
-    double       *x = x_vector.begin();
-    double       *p = direction.begin();
+      return solve_eisenstat(b, x, tolerance, max_iterations);
+    double *p = direction.data();
 
     // r = b - K x with the start vector x (zero off F).
     const double b_norm2 = start_product(b, x);
@@ -584,7 +603,7 @@ namespace VPContact
   {
     // The work vectors must vanish off the next solve's free set: zero them
     // on this one.
-    double *p = direction.begin();
+    double *p = direction.data();
     for (const unsigned int i : free_nodes)
       p[i] = residual[i] = preconditioned[i] = product[i] = 0.;
   }

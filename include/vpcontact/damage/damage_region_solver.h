@@ -12,8 +12,6 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <Epetra_CrsMatrix.h>
-#include <Epetra_Import.h>
 #include <memory>
 #include <vector>
 
@@ -86,6 +84,19 @@ namespace VPContact
                const MPI_Comm          communicator,
                const Preconditioner    kind);
 
+    /**
+     * The same from rows given in CSR form: the rows of @p owned (a
+     * contiguous range of each rank), in its order, with @p columns as
+     * global indices (DamageRegionBalancer hands its shares over so).
+     */
+    void
+    initialize(const std::vector<unsigned int>            &row_start,
+               const std::vector<types::global_dof_index> &columns,
+               const std::vector<double>                  &values,
+               const IndexSet                             &owned,
+               const MPI_Comm                              communicator,
+               const Preconditioner                        kind);
+
     /// Forget the region: the next solve builds it from its free set.
     void
     begin_step();
@@ -117,6 +128,14 @@ namespace VPContact
                const double                     tolerance,
                const unsigned int               max_iterations);
 
+    /// solve_free() on the local storage of the vectors (owned positions).
+    unsigned int
+    solve_free(const double                    *b,
+               double                          *x,
+               const std::vector<unsigned int> &free,
+               const double                     tolerance,
+               const unsigned int               max_iterations);
+
     /// How often the region was built on this rank (for the tests).
     unsigned int
     n_region_builds() const;
@@ -140,10 +159,6 @@ namespace VPContact
     void
     order_by_levels();
 
-    /// K's owned rows as CSR with ghosted column positions.
-    void
-    copy_owned_rows(const Epetra_CrsMatrix          &K,
-                    const std::vector<unsigned int> &ghosted_of_column);
 
     /// The strictly lower triangle of K_RR by rows (region indices,
     /// sorted) and its diagonal.
@@ -171,10 +186,10 @@ namespace VPContact
 
     /// solve() with Preconditioner::diagonal, on the free set selected.
     unsigned int
-    solve_eisenstat(const LA::MPI::Vector &b,
-                    LA::MPI::Vector       &x,
-                    const double           tolerance,
-                    const unsigned int     max_iterations);
+    solve_eisenstat(const double      *b,
+                    double            *x,
+                    const double       tolerance,
+                    const unsigned int max_iterations);
 
     /// The entries of the region's rows in other ranks' columns, and the
     /// owned entries the import sends (see prepare_diagonal_preconditioner()).
@@ -253,7 +268,8 @@ namespace VPContact
     MPI_Comm communicator  = MPI_COMM_SELF;
     bool     serial_layout = true;
 
-    // K's owned rows: CSR, columns as positions in the ghosted layout.
+    // K's owned rows: CSR, columns as positions in the ghosted layout of
+    // the halo (the owned positions, then the ghost entries).
     std::vector<unsigned int> row_start;
     std::vector<unsigned int> column;
     std::vector<double>       value;
@@ -318,23 +334,19 @@ namespace VPContact
     std::vector<double>                       true_residual;
 
     // Work vectors (owned positions; zero off F between solves) and the
-    // search direction as a Trilinos vector, for the ghost exchange.
+    // search direction in the ghosted layout (its ghost entries after the
+    // owned ones), which the products read.
     std::vector<double> residual;
     std::vector<double> preconditioned;
     std::vector<double> product;
     std::vector<double> region_work;
-    LA::MPI::Vector     direction;
-    LA::MPI::Vector     direction_ghosted;
-    /// Owned -> ghosted layout, built once: deal.II's assignment between
-    /// the two builds a new Epetra_Import every time (measured on 2 ranks
-    /// at 512^2 cells: the damage solves took longer than on one).
-    std::unique_ptr<Epetra_Import> importer;
+    std::vector<double> direction;
 
-    /// The exchange of the sweeps' vector t along the cut: deal.II's
-    /// partitioner packs only the entries other ranks read (an
-    /// Epetra_Import also copies every owned entry into the ghosted
-    /// vector, a pass over the whole rank per iteration however small the
-    /// free set).
+    /// The exchange of the search direction and of the sweeps' vector t
+    /// along the cut: deal.II's partitioner packs only the entries other
+    /// ranks read (an Epetra_Import also copies every owned entry into the
+    /// ghosted vector, a pass over the whole rank per iteration however
+    /// small the free set).
     std::shared_ptr<const Utilities::MPI::Partitioner> halo;
     std::vector<double>                                halo_owned;
     std::vector<double>                                halo_send;
