@@ -44,24 +44,22 @@ namespace VPContact
           }
         starts.push_back(columns.size());
       }
-    initialize(starts, columns, values, owned, communicator_in, kind_in);
+    communicator  = communicator_in;
+    kind          = kind_in;
+    serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
+    initialize_rows(starts, columns, values, owned);
   }
 
 
 
   void
-  DamageRegionSolver::initialize(
+  DamageRegionSolver::initialize_rows(
     const std::vector<unsigned int>            &starts,
     const std::vector<types::global_dof_index> &columns,
     const std::vector<double>                  &values,
-    const IndexSet                             &owned,
-    const MPI_Comm                              communicator_in,
-    const Preconditioner                        kind_in)
+    const IndexSet                             &owned)
   {
-    communicator  = communicator_in;
-    kind          = kind_in;
-    serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
-    n_owned       = owned.n_elements();
+    n_owned = owned.n_elements();
 
     // The ghosted layout the products read: the owned entries, then every
     // other column of the owned rows, as deal.II's partitioner numbers

@@ -84,19 +84,6 @@ namespace VPContact
                const MPI_Comm          communicator,
                const Preconditioner    kind);
 
-    /**
-     * The same from rows given in CSR form: the rows of @p owned (a
-     * contiguous range of each rank), in its order, with @p columns as
-     * global indices (DamageRegionBalancer hands its shares over so).
-     */
-    void
-    initialize(const std::vector<unsigned int>            &row_start,
-               const std::vector<types::global_dof_index> &columns,
-               const std::vector<double>                  &values,
-               const IndexSet                             &owned,
-               const MPI_Comm                              communicator,
-               const Preconditioner                        kind);
-
     /// Forget the region: the next solve builds it from its free set.
     void
     begin_step();
@@ -128,14 +115,6 @@ namespace VPContact
                const double                     tolerance,
                const unsigned int               max_iterations);
 
-    /// solve_free() on the local storage of the vectors (owned positions).
-    unsigned int
-    solve_free(const double                    *b,
-               double                          *x,
-               const std::vector<unsigned int> &free,
-               const double                     tolerance,
-               const unsigned int               max_iterations);
-
     /// How often the region was built on this rank (for the tests).
     unsigned int
     n_region_builds() const;
@@ -146,6 +125,22 @@ namespace VPContact
     target_of_last_solve() const;
 
   private:
+    /// initialize() from this rank's rows in CSR form, with global column
+    /// indices, in the order of @p owned (a contiguous range).
+    void
+    initialize_rows(const std::vector<unsigned int>            &row_start,
+                    const std::vector<types::global_dof_index> &columns,
+                    const std::vector<double>                  &values,
+                    const IndexSet                             &owned);
+
+    /// solve_free() on the local storage of the vectors (owned positions).
+    unsigned int
+    solve_free(const double                    *b,
+               double                          *x,
+               const std::vector<unsigned int> &free,
+               const double                     tolerance,
+               const unsigned int               max_iterations);
+
     /// The free set @p free (ascending owned positions); builds the region
     /// if it does not hold them.
     void
