@@ -1,6 +1,7 @@
 // CG for the damage problem on the free nodes, with (M)IC(0) of a region
 // around them (see damage_region_solver.h).
 #include <vpcontact/damage/damage_region_solver.h>
+#include <vpcontact/damage/support_product.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
@@ -18,61 +19,18 @@ namespace VPContact
                                  const MPI_Comm          communicator_in,
                                  const Preconditioner    kind_in)
   {
-    // The local storage of an owned vector lists the owned indices in
-    // ascending order, as the row map of the matrix does, so a row's local
-    // index is its owned position.
-    const Epetra_CrsMatrix &K = matrix.trilinos_matrix();
-    AssertThrow(static_cast<unsigned int>(K.NumMyRows()) == owned.n_elements(),
-                ExcInternalError());
-    std::vector<unsigned int>            starts(1, 0);
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  values;
-    starts.reserve(owned.n_elements() + 1);
-    columns.reserve(K.NumMyNonzeros());
-    values.reserve(K.NumMyNonzeros());
-    for (unsigned int i = 0; i < owned.n_elements(); ++i)
-      {
-        int     n_entries = 0;
-        double *row       = nullptr;
-        int    *indices   = nullptr;
-        K.ExtractMyRowView(i, n_entries, row, indices);
-        for (int e = 0; e < n_entries; ++e)
-          {
-            columns.push_back(
-              TrilinosWrappers::global_index(K.ColMap(), indices[e]));
-            values.push_back(row[e]);
-          }
-        starts.push_back(columns.size());
-      }
     communicator  = communicator_in;
     kind          = kind_in;
     serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
-    initialize_rows(starts, columns, values, owned);
-  }
-
-
-
-  void
-  DamageRegionSolver::initialize_rows(
-    const std::vector<unsigned int>            &starts,
-    const std::vector<types::global_dof_index> &columns,
-    const std::vector<double>                  &values,
-    const IndexSet                             &owned)
-  {
-    n_owned = owned.n_elements();
+    n_owned       = owned.n_elements();
 
     // The ghosted layout the products read: the owned entries, then every
     // other column of the owned rows, as deal.II's partitioner numbers
     // them; the columns are kept as positions in it.
-    std::vector<types::global_dof_index> sorted(columns);
-    std::sort(sorted.begin(), sorted.end());
-    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-    IndexSet ghosted(owned.size());
-    ghosted.add_indices(sorted.begin(), sorted.end());
-    ghosted.add_indices(owned);
-    halo = std::make_shared<Utilities::MPI::Partitioner>(owned,
-                                                         ghosted,
-                                                         communicator);
+    halo = std::make_shared<Utilities::MPI::Partitioner>(
+      owned,
+      columns_of_owned_rows(matrix, owned),
+      communicator);
     const unsigned int n_ghosts = halo->n_ghost_indices();
     halo_owned.assign(n_owned, 0.);
     halo_send.assign(halo->n_import_indices(), 0.);
@@ -84,12 +42,7 @@ namespace VPContact
         owned_of_ghosted[g] = g;
       else
         ghost_of_ghosted[g] = g - n_owned;
-
-    row_start = starts;
-    value     = values;
-    column.resize(columns.size());
-    for (std::size_t e = 0; e < columns.size(); ++e)
-      column[e] = halo->global_to_local(columns[e]);
+    copy_owned_rows(matrix.trilinos_matrix());
 
     is_free.assign(n_owned, false);
     free_nodes.clear();
@@ -99,6 +52,43 @@ namespace VPContact
     direction.assign(n_owned + n_ghosts, 0.);
     region_valid = false;
     builds       = 0;
+  }
+
+
+
+  void
+  DamageRegionSolver::copy_owned_rows(const Epetra_CrsMatrix &K)
+  {
+    // The local storage of an owned vector lists the owned indices in
+    // ascending order, as the row map of the matrix does, so a row's local
+    // index is its owned position. Reserved to the size, so that the copy
+    // holds no doubled capacity of push_back's growth for the rest of the
+    // run.
+    AssertThrow(static_cast<unsigned int>(K.NumMyRows()) == n_owned,
+                ExcInternalError());
+    std::vector<unsigned int> position_of_column(K.NumMyCols());
+    for (unsigned int c = 0; c < position_of_column.size(); ++c)
+      position_of_column[c]
+        = halo->global_to_local(TrilinosWrappers::global_index(K.ColMap(), c));
+    row_start.assign(1, 0);
+    row_start.reserve(n_owned + 1);
+    column.clear();
+    column.reserve(K.NumMyNonzeros());
+    value.clear();
+    value.reserve(K.NumMyNonzeros());
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        int     n_entries = 0;
+        double *values    = nullptr;
+        int    *indices   = nullptr;
+        K.ExtractMyRowView(i, n_entries, values, indices);
+        for (int e = 0; e < n_entries; ++e)
+          {
+            column.push_back(position_of_column[indices[e]]);
+            value.push_back(values[e]);
+          }
+        row_start.push_back(column.size());
+      }
   }
 
 

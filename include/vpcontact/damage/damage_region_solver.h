@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <memory>
 #include <vector>
 
@@ -125,13 +126,10 @@ namespace VPContact
     target_of_last_solve() const;
 
   private:
-    /// initialize() from this rank's rows in CSR form, with global column
-    /// indices, in the order of @p owned (a contiguous range).
+    /// K's owned rows as CSR, the columns as positions in the halo's
+    /// ghosted layout.
     void
-    initialize_rows(const std::vector<unsigned int>            &row_start,
-                    const std::vector<types::global_dof_index> &columns,
-                    const std::vector<double>                  &values,
-                    const IndexSet                             &owned);
+    copy_owned_rows(const Epetra_CrsMatrix &K);
 
     /// solve_free() on the local storage of the vectors (owned positions).
     unsigned int
