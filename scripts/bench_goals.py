@@ -199,11 +199,16 @@ def goals(best, sizes, algebras, every=None):
         ("damage solves speed-up from 1 to 2 ranks at least 1.6",
          each(lambda a1, a2: fmt(ratio(damage(a1), damage(a2)))),
          "The damage solves work on the free nodes only, which lie around "
-         "the loaded corner, mostly on one rank: that rank does most of "
-         "the iterations while the other waits in the reductions (the "
-         "message of commit fc600f0 counts them at 256² cells). Each CG iteration needs two global "
-         "sums, and the preconditioner is block Jacobi between the ranks, "
-         "so 2 ranks also need more iterations."),
+         "the loaded corner, mostly on one rank: that rank does two thirds "
+         "of the work while the other waits in the reductions. The "
+         "preconditioner is block Jacobi between the ranks, and the first "
+         "solve of each step, whose change is smooth over the whole free "
+         "region, needs more than twice the iterations of one rank's; the "
+         "later solves of a step cost the same (the message of the commit "
+         "that wrote this sentence counts both at 512² cells, and the "
+         "attempts that did not help: a start vector corrected on "
+         "subdomain constants, the region moved to equal shares of the "
+         "ranks, which took more iterations than it saved)."),
         ("error estimate at most 5 % of the run, best serial run",
          percent(ratio(fastest.get("estimate_ms"), fastest["per_step_ms"]))
          + f" ({config(fastest)})",
