@@ -83,9 +83,9 @@ namespace VPContact
           {
             const unsigned int i = region[k];
             for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
-              if (owned_of_ghosted[column[e]] < 0)
+              if (owned_of_ghosted(column[e]) < 0)
                 {
-                  ghost_column.push_back(ghost_of_ghosted[column[e]]);
+                  ghost_column.push_back(column[e] - n_owned);
                   ghost_value.push_back(value[e]);
                 }
             if (ghost_column.size() > ghost_start.back())

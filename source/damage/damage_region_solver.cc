@@ -35,13 +35,6 @@ namespace VPContact
     halo_owned.assign(n_owned, 0.);
     halo_send.assign(halo->n_import_indices(), 0.);
     ghost_values.assign(n_ghosts, 0.);
-    owned_of_ghosted.assign(n_owned + n_ghosts, -1);
-    ghost_of_ghosted.assign(n_owned + n_ghosts, 0);
-    for (unsigned int g = 0; g < n_owned + n_ghosts; ++g)
-      if (g < n_owned)
-        owned_of_ghosted[g] = g;
-      else
-        ghost_of_ghosted[g] = g - n_owned;
     copy_owned_rows(matrix.trilinos_matrix());
 
     is_free.assign(n_owned, false);
@@ -130,7 +123,7 @@ namespace VPContact
         for (const unsigned int i : front)
           for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
             {
-              const int j = owned_of_ghosted[column[e]];
+              const int j = owned_of_ghosted(column[e]);
               if (j >= 0 && !in_region[j])
                 {
                   in_region[j] = true;
@@ -178,7 +171,7 @@ namespace VPContact
         const unsigned int i = region[k];
         for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
           {
-            const int j = owned_of_ghosted[column[e]];
+            const int j = owned_of_ghosted(column[e]);
             if (j >= 0 && region_index[j] >= 0
                 && static_cast<unsigned int>(region_index[j]) < k)
               level[k] = std::max(level[k], level[region_index[j]] + 1);
@@ -249,7 +242,7 @@ namespace VPContact
         row.clear();
         for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e)
           {
-            const int j = owned_of_ghosted[column[e]];
+            const int j = owned_of_ghosted(column[e]);
             if (j < 0 || region_index[j] < 0)
               continue;
             const unsigned int r = region_index[j];

@@ -250,6 +250,14 @@ namespace VPContact
     double
     multiply_direction();
 
+    /// The owned position of the column at ghosted position @p c, or -1
+    /// for a ghost (whose entry is at c - n_owned among the halo's).
+    int
+    owned_of_ghosted(const unsigned int c) const
+    {
+      return c < n_owned ? static_cast<int>(c) : -1;
+    }
+
     /// Sum over the ranks (none on one).
     double
     global_sum(const double local) const;
@@ -266,11 +274,6 @@ namespace VPContact
     std::vector<unsigned int> row_start;
     std::vector<unsigned int> column;
     std::vector<double>       value;
-    /// Owned position of each ghosted position (or -1 for a ghost).
-    std::vector<int> owned_of_ghosted;
-    /// Position among the halo's ghost entries of each ghosted position
-    /// that is a ghost (unused for the owned ones).
-    std::vector<unsigned int> ghost_of_ghosted;
     unsigned int              n_owned = 0;
     Preconditioner kind = Preconditioner::modified_incomplete_cholesky;
 
