@@ -177,8 +177,9 @@ def goals(best, sizes, algebras, every=None):
          "As on 1 rank."),
         ("peak memory of CG + AMG at most the peer's, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["mem_all_mb"], g1["mem_all_mb"]))),
-         "The peak comes at the steps that estimate the error, whose "
-         "moments (32 doubles per cell in 2D with damage) come on top of "
+         "The peak comes at the steps that write the fields, whose piece "
+         "(the points, cells and nodal values of the owned cells, and the "
+         "contact fields as vectors on every unknown) comes on top of "
          "ML's hierarchy (its product A P, allocated at an estimated size "
          "and then copied). For the whole run the program holds the mesh "
          "(deal.II's cells of every level, p4est's forest, the "

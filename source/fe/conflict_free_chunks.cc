@@ -40,14 +40,10 @@ namespace VPContact
                              const AffineConstraints<double> &constraints,
                              const unsigned int               chunk_size)
   {
-    // Each cell's positions, and whether it is plain; the cells into
-    // chunks of consecutive cells, the plain ones listed per chunk.
+    // Each cell's positions, and whether it is plain.
     constrained = constrained_entries(constraints);
     n_cells     = cells;
-    const unsigned int n_chunks
-      = std::max<std::size_t>(1, (cells + chunk_size - 1) / chunk_size);
-    chunk_cells.assign(n_chunks, {});
-    others.clear();
+    std::vector<bool>                    plain(cells, true);
     std::vector<types::global_dof_index> indices;
     for (std::size_t i = 0; i < cells; ++i)
       {
@@ -57,23 +53,52 @@ namespace VPContact
             n_entries = indices.size();
             cell_positions.assign(cells * n_entries, 0);
           }
-        bool plain = true;
         for (unsigned int a = 0; a < n_entries; ++a)
           {
             const auto index = indices[a];
-            plain            = plain && index >= first_owned
-                    && index < first_owned + n_owned
-                    && !std::binary_search(constrained.begin(),
-                                           constrained.end(),
-                                           index);
+            plain[i]         = plain[i] && index >= first_owned
+                       && index < first_owned + n_owned
+                       && !std::binary_search(constrained.begin(),
+                                              constrained.end(),
+                                              index);
             cell_positions[i * n_entries + a]
-              = (plain ? index - first_owned : 0);
+              = (plain[i] ? index - first_owned : 0);
           }
-        if (plain)
-          chunk_cells[i / chunk_size].push_back(i);
-        else
-          others.push_back(i);
       }
+    make_chunks(plain, chunk_size);
+  }
+
+
+
+  void
+  ConflictFreeChunks::reinit(const std::vector<unsigned int> &positions,
+                             const unsigned int               entries,
+                             const std::vector<bool>         &plain,
+                             const unsigned int               chunk_size)
+  {
+    AssertThrow(positions.size() == plain.size() * entries, ExcInternalError());
+    constrained.clear();
+    n_cells        = plain.size();
+    n_entries      = entries;
+    cell_positions = positions;
+    make_chunks(plain, chunk_size);
+  }
+
+
+
+  void
+  ConflictFreeChunks::make_chunks(const std::vector<bool> &plain,
+                                  const unsigned int       chunk_size)
+  {
+    const unsigned int n_chunks
+      = std::max<std::size_t>(1, (n_cells + chunk_size - 1) / chunk_size);
+    chunk_cells.assign(n_chunks, {});
+    others.clear();
+    for (std::size_t i = 0; i < n_cells; ++i)
+      if (plain[i])
+        chunk_cells[i / chunk_size].push_back(i);
+      else
+        others.push_back(i);
     color_chunks_greedily(n_chunks);
     made = true;
   }

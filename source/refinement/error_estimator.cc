@@ -177,15 +177,18 @@ namespace VPContact
 
   template <int dim>
   template <bool damage>
-  double
+  typename ErrorEstimator<dim>::CellNorms
   ErrorEstimator<dim>::first_pass(const std::size_t           i,
                                   const double               *entries,
                                   const ViscoplasticLaw<dim> &law,
-                                  const bool                  initial)
+                                  const bool                  initial,
+                                  double                     *moments)
   {
-    // On cell i: int_K phi_a q_h for every node a and component q of the
-    // recovered fields, and the squared norm of G_n - G_0, which needs
-    // nothing recovered (at n = 0, G_0 is stored instead).
+    // On cell i: its moments int_K phi_a q_h for every node a and
+    // component q of the recovered fields (into @p moments, component c of
+    // node a at a * n_c + c), the squared norms of the solution, and the
+    // squared norm of G_n - G_0, which needs nothing recovered (at n = 0,
+    // G_0 is stored instead).
     constexpr unsigned int n_c    = n_fields<dim, damage>;
     const auto             points = history->get_data((*cells)[i]);
     const auto             rates  = history->initial_rates((*cells)[i]);
@@ -194,11 +197,8 @@ namespace VPContact
     std::array<double, max_points>                  zeta;
     double                                          f[max_points * n_c];
     point_values<damage>(i, entries, f, &strain[0], &zeta[0]);
-    double *const m = &moments[i * n_nodes * n_c];
-    std::fill(m, m + n_nodes * n_c, 0.);
-    double     time      = 0;
-    CellNorms &size      = norms[i];
-    size.solution_stress = size.solution_strain = size.solution_damage = 0;
+    std::fill(moments, moments + n_nodes * n_c, 0.);
+    CellNorms size;
     for (unsigned int q = 0; q < n_q; ++q)
       {
         size.solution_stress
@@ -210,15 +210,15 @@ namespace VPContact
           {
             const double w = kinematics->shape_value(q, a) * JxW[q];
             for (unsigned int c = 0; c < n_c; ++c)
-              m[a * n_c + c] += w * f[q * n_c + c];
+              moments[a * n_c + c] += w * f[q * n_c + c];
           }
         const auto rate = law.rate(points[q].stress, strain[q], zeta[q]);
         if (initial)
           rates[q] = rate;
         const auto change = rate - rates[q];
-        time += scalar_product(change, change) * JxW[q];
+        size.time += scalar_product(change, change) * JxW[q];
       }
-    return time;
+    return size;
   }
 
 
@@ -226,86 +226,89 @@ namespace VPContact
   template <int dim>
   template <bool damage>
   void
-  ErrorEstimator<dim>::gather_nodes(const std::size_t begin,
-                                    const std::size_t end)
+  ErrorEstimator<dim>::add_plain_moments(const unsigned int          color,
+                                         const double               *entries,
+                                         const ViscoplasticLaw<dim> &law,
+                                         const bool                  initial)
   {
-    // Local nodes begin to end (owned and ghost) of the cells without
-    // hanging nodes: the sum of the moments of the cells that share each.
-    constexpr unsigned int n_c    = n_fields<dim, damage>;
-    double *const          values = recovered.begin();
-    for (std::size_t j = begin; j < end; ++j)
-      {
-        double node[n_c] = {};
-        for (unsigned int s = slot_start[j]; s < slot_start[j + 1]; ++s)
+    // The chunks of one color share no node: they run in any threads at
+    // once, each adding its cells' moments to their nodes' entries of the
+    // recovered fields (owned and ghost) in the cells' order, and summing
+    // its cells' norms.
+    constexpr unsigned int           n_c     = n_fields<dim, damage>;
+    const std::vector<unsigned int> &colored = chunks.colors()[color];
+    double *const                    values  = recovered.begin();
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      colored.size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        double moments[max_nodes * n_c];
+        for (std::size_t k = begin; k < end; ++k)
           {
-            const double *const cell_moments
-              = &moments[std::size_t(slots[s]) * n_c];
-            for (unsigned int c = 0; c < n_c; ++c)
-              node[c] += cell_moments[c];
+            CellNorms &sums = chunk_norms[colored[k]];
+            for (const std::size_t i : chunks.plain_cells(colored[k]))
+              {
+                sums += first_pass<damage>(i, entries, law, initial, moments);
+                const unsigned int *const nodes = chunks.positions(i);
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  {
+                    double *const node = values + std::size_t(nodes[a]) * n_c;
+                    for (unsigned int c = 0; c < n_c; ++c)
+                      node[c] += moments[a * n_c + c];
+                  }
+              }
           }
-        std::copy_n(node, n_c, values + j * n_c);
-      }
+      },
+      1);
   }
 
 
 
   template <int dim>
   void
-  ErrorEstimator<dim>::add_constrained_cells()
+  ErrorEstimator<dim>::add_constrained_moments(const std::size_t   i,
+                                               const double *const moments)
   {
-    // The moments of the (few) cells with hanging nodes: a constrained
+    // The moments of a (rare) cell with hanging nodes: a constrained
     // node's go to the nodes it hangs on, with the constraint's weights (as
     // AffineConstraints::distribute_local_to_global() would add them).
     double *const values      = recovered.begin();
     const auto   &partitioner = *lumped_mass.get_partitioner();
-    for (const std::size_t i : constrained_cells)
-      for (unsigned int a = 0; a < n_nodes; ++a)
-        {
-          const double *const cell_moments
-            = &moments[(i * n_nodes + a) * n_components];
-          const auto dof = node_indices[i * n_nodes + a];
-          if (!space.constraints->is_constrained(dof))
+    for (unsigned int a = 0; a < n_nodes; ++a)
+      {
+        const double *const cell_moments = &moments[a * n_components];
+        const auto          dof          = node_indices[i * n_nodes + a];
+        if (!space.constraints->is_constrained(dof))
+          {
+            double *const node
+              = values
+                + node_locals[i * n_nodes + a] * std::size_t(n_components);
+            for (unsigned int c = 0; c < n_components; ++c)
+              node[c] += cell_moments[c];
+          }
+        else
+          for (const auto &entry :
+               *space.constraints->get_constraint_entries(dof))
             {
-              double *const node
-                = values
-                  + node_locals[i * n_nodes + a] * std::size_t(n_components);
+              double *const node = values
+                                   + partitioner.global_to_local(entry.first)
+                                       * std::size_t(n_components);
               for (unsigned int c = 0; c < n_components; ++c)
-                node[c] += cell_moments[c];
+                node[c] += entry.second * cell_moments[c];
             }
-          else
-            for (const auto &entry :
-                 *space.constraints->get_constraint_entries(dof))
-              {
-                double *const node = values
-                                     + partitioner.global_to_local(entry.first)
-                                         * std::size_t(n_components);
-                for (unsigned int c = 0; c < n_components; ++c)
-                  node[c] += entry.second * cell_moments[c];
-              }
-        }
+      }
   }
 
 
 
   template <int dim>
-  template <bool damage>
   void
   ErrorEstimator<dim>::project_to_nodes()
   {
     // sum_K int_K phi_i q_h for every component q of the recovered fields,
-    // from the moments of the first pass, in one exchange; divided by the
-    // lumped mass; then the hanging nodes take their parents' average.
-    const auto       &partitioner = *lumped_mass.get_partitioner();
-    const std::size_t n_local
-      = partitioner.locally_owned_size() + partitioner.n_ghost_indices();
-    parallel::apply_to_subranges(
-      std::size_t(0),
-      n_local,
-      [&](const std::size_t begin, const std::size_t end) {
-        gather_nodes<damage>(begin, end);
-      },
-      256);
-    add_constrained_cells();
+    // added by the first pass, in one exchange; divided by the lumped
+    // mass; then the hanging nodes take their parents' average.
+    const auto &partitioner = *lumped_mass.get_partitioner();
     recovered.compress(VectorOperation::add);
     double *const values = recovered.begin();
     for (unsigned int j = 0; j < partitioner.locally_owned_size(); ++j)
@@ -331,7 +334,7 @@ namespace VPContact
 
   template <int dim>
   template <bool damage>
-  void
+  typename ErrorEstimator<dim>::CellNorms
   ErrorEstimator<dim>::second_pass(const std::size_t i, const double *entries)
   {
     // On cell i: the squared distances between the recovered fields,
@@ -373,7 +376,7 @@ namespace VPContact
         strain += scalar_product(strain_error, strain_error) * JxW[q];
         gradient += gradient_error.norm_square() * JxW[q];
       }
-    CellNorms &norm = norms[i];
+    CellNorms norm;
     norm.stress     = stress;
     norm.strain     = strain;
     norm.damage     = gradient * damage_weights[i];
@@ -382,6 +385,7 @@ namespace VPContact
     const unsigned int index = (*cells)[i]->active_cell_index();
     indicators[index]        = std::max(indicators[index], eta);
     step_indicators[index]   = eta;
+    return norm;
   }
 
 
@@ -393,27 +397,36 @@ namespace VPContact
                               const double               *entries,
                               const ViscoplasticLaw<dim> &law)
   {
-    // Two passes over the cells in the threads, around the projection: the
-    // moments (and the time part), then the norms. The ghost entries are
-    // written by the projection's sums, so they are marked as such first.
+    // Two passes over the cells in the threads, around the projection. The
+    // first adds the cells' moments to the recovered fields (owned and
+    // ghost entries, zeroed first): the cells without hanging nodes color
+    // by color, then the others in this thread. Nothing per cell is kept
+    // from one pass to the other. The second compares; both add each
+    // cell's norms to its chunk's sums, in the cells' order.
+    recovered = 0.;
     recovered.zero_out_ghost_values();
+    chunk_norms.assign(chunks.n_chunks() + 1, CellNorms());
+    for (unsigned int color = 0; color < chunks.colors().size(); ++color)
+      add_plain_moments<damage>(color, entries, law, n == 0);
+    double moments[max_nodes * n_fields<dim, damage>];
+    for (const std::size_t i : chunks.other_cells())
+      {
+        chunk_norms.back()
+          += first_pass<damage>(i, entries, law, n == 0, moments);
+        add_constrained_moments(i, moments);
+      }
+    project_to_nodes();
     parallel::apply_to_subranges(
-      std::size_t(0),
-      cells->size(),
-      [&](const std::size_t begin, const std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
-          norms[i].time = first_pass<damage>(i, entries, law, n == 0);
+      0u,
+      chunks.n_chunks(),
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int c = begin; c < end; ++c)
+          for (const std::size_t i : chunks.plain_cells(c))
+            chunk_norms[c] += second_pass<damage>(i, entries);
       },
-      64);
-    project_to_nodes<damage>();
-    parallel::apply_to_subranges(
-      std::size_t(0),
-      cells->size(),
-      [&](const std::size_t begin, const std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
-          second_pass<damage>(i, entries);
-      },
-      64);
+      1);
+    for (const std::size_t i : chunks.other_cells())
+      chunk_norms.back() += second_pass<damage>(i, entries);
   }
 
 
@@ -428,20 +441,11 @@ namespace VPContact
   {
     // The number of recovered components is fixed at compile time in the
     // passes, so that their loops over the components are unrolled.
-    //
-    // The buffers of the passes stay from one step to the next only where
-    // every step is estimated; a run that estimates every tenth step holds
-    // their memory (the moments, 32 doubles per cell in 2D with damage) only
-    // while it estimates, and pays for the allocation once per estimate.
-    allocate_step_buffers();
     if (with_damage)
       passes<true>(n, entries, law);
     else
       passes<false>(n, entries, law);
-    const ErrorEstimate estimate = sum_norms(k, youngs_modulus);
-    if (every_steps > 1)
-      release_step_buffers();
-    return estimate;
+    return sum_norms(k, youngs_modulus);
   }
 
 
@@ -450,10 +454,10 @@ namespace VPContact
   ErrorEstimate
   ErrorEstimator<dim>::sum_norms(const double k, const double youngs_modulus)
   {
-    // The cells' norms summed in the cells' order (the same bits with any
+    // The chunks' sums added in the chunks' order (the same bits with any
     // number of threads), then over the ranks.
     double sums[7] = {0, 0, 0, 0, 0, 0, 0};
-    for (const CellNorms &c : norms)
+    for (const CellNorms &c : chunk_norms)
       {
         sums[0] += c.stress;
         sums[1] += c.strain;

@@ -1,6 +1,6 @@
 // ErrorEstimator's work once per mesh: the recovery space and its
-// constraints, the lumped mass, the cells that share each node, and the
-// per-cell data, and the buffers of the passes of a step.
+// constraints, the lumped mass, the chunks and colors of the cells for the
+// threads, and the per-cell data.
 #include <vpcontact/refinement/error_estimator.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -57,7 +57,7 @@ namespace VPContact
                      relevant.tensor_product(components),
                      communicator);
     setup_nodes_and_mass();
-    setup_gather();
+    setup_chunks();
     setup_hanging_nodes();
     setup_cell_data();
     indicators.reinit(tria.n_active_cells());
@@ -142,31 +142,19 @@ namespace VPContact
 
   template <int dim>
   void
-  ErrorEstimator<dim>::setup_gather()
+  ErrorEstimator<dim>::setup_chunks()
   {
-    // For each local node (owned and ghost), the slots of the cells without
-    // hanging nodes that share it, in the cells' order: the sums of the
-    // projection then run over the nodes in the threads, and each node adds
-    // its cells' moments in the order in which one thread going from cell
-    // to cell would.
-    const auto        &partitioner = *lumped_mass.get_partitioner();
-    const unsigned int n_local
-      = partitioner.locally_owned_size() + partitioner.n_ghost_indices();
-    slot_start.assign(n_local + 1, 0);
-    constrained_cells.clear();
-    for (std::size_t i = 0; i < cells->size(); ++i)
-      if (has_constraints[i])
-        constrained_cells.push_back(i);
-      else
-        for (unsigned int a = 0; a < n_nodes; ++a)
-          ++slot_start[node_locals[i * n_nodes + a] + 1];
-    std::partial_sum(slot_start.begin(), slot_start.end(), slot_start.begin());
-    slots.resize(slot_start.back());
-    std::vector<unsigned int> next(slot_start.begin(), slot_start.end() - 1);
-    for (std::size_t i = 0; i < cells->size(); ++i)
-      if (!has_constraints[i])
-        for (unsigned int a = 0; a < n_nodes; ++a)
-          slots[next[node_locals[i * n_nodes + a]]++] = i * n_nodes + a;
+    // The cells without hanging nodes add their moments to their nodes'
+    // entries directly, chunk by chunk, color by color (see
+    // ConflictFreeChunks): every node receives its sums in the same order
+    // with any number of threads. A chunk size that does not depend on the
+    // number of threads keeps the order, and so the bits, the same on any
+    // machine; 256 cells give a 512^2 mesh a thousand chunks for the
+    // threads.
+    std::vector<bool> plain(has_constraints.size());
+    for (std::size_t i = 0; i < plain.size(); ++i)
+      plain[i] = !has_constraints[i];
+    chunks.reinit(node_locals, n_nodes, plain, 256);
   }
 
 
@@ -185,7 +173,7 @@ namespace VPContact
     hanging_nodes.clear();
     hanging_start.assign(1, 0);
     hanging_parents.clear();
-    for (const std::size_t i : constrained_cells)
+    for (const std::size_t i : chunks.other_cells())
       for (unsigned int a = 0; a < n_nodes; ++a)
         {
           const auto dof   = node_indices[i * n_nodes + a];
@@ -209,40 +197,13 @@ namespace VPContact
   void
   ErrorEstimator<dim>::setup_cell_data()
   {
-    // (h_K / pi)^2, which depends on the mesh only. The buffers of the
-    // passes are sized by the mesh, so those of the last mesh go.
+    // (h_K / pi)^2, which depends on the mesh only.
     damage_weights.resize(cells->size());
     for (std::size_t i = 0; i < cells->size(); ++i)
       {
         const double h_over_pi = (*cells)[i]->diameter() / numbers::PI;
         damage_weights[i]      = h_over_pi * h_over_pi;
       }
-    release_step_buffers();
-  }
-
-
-
-  template <int dim>
-  void
-  ErrorEstimator<dim>::allocate_step_buffers()
-  {
-    // Left uninitialized: the first pass writes every entry before it is
-    // read, and its threads touch the pages of their own cells first.
-    if (!moments)
-      {
-        moments.reset(new double[cells->size() * n_nodes * n_components]);
-        norms.resize(cells->size());
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  ErrorEstimator<dim>::release_step_buffers()
-  {
-    moments.reset();
-    std::vector<CellNorms>().swap(norms);
   }
 
 

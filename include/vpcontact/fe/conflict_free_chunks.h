@@ -52,6 +52,25 @@ namespace VPContact
            const AffineConstraints<double> &constraints,
            const unsigned int               chunk_size);
 
+    /**
+     * Make the plan for cells whose entries are positions in one local
+     * vector (owned and ghost entries alike): cell i adds to
+     * @p cell_positions[i * n_entries + a], a < @p n_entries, and it is
+     * plain where @p plain[i]; the other cells are left to the caller.
+     * outdated() does not apply to this plan: the caller makes it again
+     * with the mesh.
+     */
+    void
+    reinit(const std::vector<unsigned int> &cell_positions,
+           const unsigned int               n_entries,
+           const std::vector<bool>         &plain,
+           const unsigned int               chunk_size);
+    /// The number of chunks.
+    unsigned int
+    n_chunks() const
+    {
+      return chunk_cells.size();
+    }
     /// Forget the plan (the mesh has changed): outdated() is true.
     void
     clear()
@@ -99,6 +118,10 @@ namespace VPContact
     static std::vector<types::global_dof_index>
     constrained_entries(const AffineConstraints<double> &constraints);
 
+    /// The cells into chunks of @p chunk_size consecutive cells, the plain
+    /// ones (@p plain) listed per chunk and the others apart, then colored.
+    void
+    make_chunks(const std::vector<bool> &plain, const unsigned int chunk_size);
     void
     color_chunks_greedily(const unsigned int n_chunks);
 

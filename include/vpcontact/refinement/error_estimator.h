@@ -6,6 +6,7 @@
 #define vpcontact_error_estimator_h
 
 #include <vpcontact/fe/cell_kinematics.h>
+#include <vpcontact/fe/conflict_free_chunks.h>
 #include <vpcontact/fe/quadrature_history.h>
 #include <vpcontact/fe/scalar_node_space.h>
 #include <vpcontact/material/viscoplastic_law.h>
@@ -156,21 +157,30 @@ namespace VPContact
       double stress = 0, strain = 0, damage = 0, time = 0;
       /// The squared norms of sigma_h, eps(u_h) and zeta_h on the cell.
       double solution_stress = 0, solution_strain = 0, solution_damage = 0;
+
+      CellNorms &
+      operator+=(const CellNorms &other)
+      {
+        stress += other.stress;
+        strain += other.strain;
+        damage += other.damage;
+        time += other.time;
+        solution_stress += other.solution_stress;
+        solution_strain += other.solution_strain;
+        solution_damage += other.solution_damage;
+        return *this;
+      }
     };
     void
     make_own_space(const parallel::TriangulationBase<dim> &triangulation);
     void
     setup_nodes_and_mass();
     void
-    setup_gather();
+    setup_chunks();
     void
     setup_hanging_nodes();
     void
     setup_cell_data();
-    void
-    allocate_step_buffers();
-    void
-    release_step_buffers();
     template <bool damage>
     void
     evaluate_fields(const std::size_t        i,
@@ -188,21 +198,24 @@ namespace VPContact
                  SymmetricTensor<2, dim> *strain,
                  double                  *zeta) const;
     template <bool damage>
-    double
+    CellNorms
     first_pass(const std::size_t           i,
                const double               *entries,
                const ViscoplasticLaw<dim> &law,
-               const bool                  initial);
+               const bool                  initial,
+               double                     *moments);
     template <bool damage>
     void
-    gather_nodes(const std::size_t begin, const std::size_t end);
+    add_plain_moments(const unsigned int          color,
+                      const double               *entries,
+                      const ViscoplasticLaw<dim> &law,
+                      const bool                  initial);
     void
-    add_constrained_cells();
-    template <bool damage>
+    add_constrained_moments(const std::size_t i, const double *moments);
     void
     project_to_nodes();
     template <bool damage>
-    void
+    CellNorms
     second_pass(const std::size_t i, const double *entries);
     template <bool damage>
     void
@@ -247,12 +260,11 @@ namespace VPContact
     std::vector<types::global_dof_index> node_indices;
     std::vector<unsigned int>            node_locals;
     std::vector<bool>                    has_constraints;
-    /// For each local node, the (cell, node) slots i * n_nodes + a of the
-    /// cells without hanging nodes that share it, in the cells' order
-    /// (compressed rows: node j's at slots[slot_start[j]...]); the cells
-    /// with hanging nodes are listed apart.
-    std::vector<unsigned int> slot_start, slots;
-    std::vector<std::size_t>  constrained_cells;
+    /// The owned cells in chunks of consecutive cells, and the chunks in
+    /// colors whose cells without hanging nodes share no node: the first
+    /// pass adds their moments to the recovered fields from several
+    /// threads at once. The cells with hanging nodes are its other cells.
+    ConflictFreeChunks chunks;
     /// The constrained nodes of the owned cells (scalar local indices) and
     /// the nodes and weights they take their values from.
     std::vector<unsigned int>                    hanging_nodes;
@@ -261,14 +273,9 @@ namespace VPContact
     /// (h_K / pi)^2 of each owned cell.
     std::vector<double> damage_weights;
 
-    /// Per step, kept between the passes: the cells' moments int_K phi_a
-    /// q_h (component c of node a of cell i at (i * n_nodes + a) *
-    /// n_components + c) and every cell's norms. The moments take 32
-    /// doubles per cell of a 2D damage scene, so they are held from one
-    /// step to the next only when every step is estimated (see
-    /// allocate_step_buffers()).
-    std::unique_ptr<double[]> moments;
-    std::vector<CellNorms>    norms;
+    /// Per step: the norms summed over the cells of each chunk, in the
+    /// cells' order, and (last) over the cells with hanging nodes.
+    std::vector<CellNorms> chunk_norms;
 
     ErrorEstimate largest_sum, largest_part;
     Vector<float> indicators;
