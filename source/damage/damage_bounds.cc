@@ -278,6 +278,9 @@ namespace VPContact
               }
             neighbour_start.push_back(neighbour.size());
           }
+        // Grown by doubling: the spare half would stay for the run.
+        neighbour.shrink_to_fit();
+        neighbour_start.shrink_to_fit();
       }
     std::vector<unsigned int> on_front;
     for (unsigned int i = 0; i < dofs.size(); ++i)
