@@ -29,6 +29,13 @@ namespace VPContact
     ghost_nodes.clear();
     const Epetra_BlockMap &ghosted_map = lumped_mass.trilinos_vector().Map();
     n_ghosted                          = ghosted_map.NumMyElements();
+    // Sized as they end: they are kept for the mesh.
+    const std::size_t n_nodes = damage_dofs.n_elements();
+    for (auto *list : {&ghosted_position, &owned_position})
+      list->reserve(n_nodes);
+    dofs.reserve(n_nodes);
+    mass.reserve(n_nodes);
+    owned.reserve(n_nodes);
     for (const auto dof : damage_dofs)
       {
         dofs.push_back(dof);

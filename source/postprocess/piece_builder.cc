@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_index_access.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace VPContact
 {
@@ -43,6 +44,22 @@ namespace VPContact
                              "vertices: it needs P1/Q1 elements, not "
                              + fe.get_name() + "."));
     }
+
+    /// The number of locally owned cells and of their vertices, counted
+    /// once per cell.
+    template <int dim>
+    std::pair<std::size_t, std::size_t>
+    count_owned_corners(const DoFHandler<dim> &dof_handler)
+    {
+      std::size_t n_cells = 0, n_corners = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            ++n_cells;
+            n_corners += cell->n_vertices();
+          }
+      return {n_cells, n_corners};
+    }
   } // namespace
 
 
@@ -60,6 +77,15 @@ namespace VPContact
       numbers::invalid_unsigned_int);
     std::vector<types::global_dof_index> dofs;
     VtuPiece                            &piece = fields.piece;
+    // The cells' lists sized as they will end; the points' (not known
+    // before the loop) lose the spare capacity of their growth after it.
+    // The piece lives while the fields are written, at the peak of a run's
+    // memory.
+    const auto [n_cells, n_corners] = count_owned_corners(dof_handler);
+    piece.connectivity.reserve(n_corners);
+    piece.offsets.reserve(n_cells);
+    piece.types.reserve(n_cells);
+    cell_indices.reserve(n_cells);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -91,6 +117,8 @@ namespace VPContact
           piece.types.push_back(cell->reference_cell().vtk_linear_type());
           cell_indices.push_back(cell->active_cell_index());
         }
+    positions.shrink_to_fit();
+    point_entries.shrink_to_fit();
     piece.points.reserve(3 * positions.size());
     for (const auto &position : positions)
       for (unsigned int d = 0; d < 3; ++d)
