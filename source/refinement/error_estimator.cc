@@ -403,6 +403,8 @@ namespace VPContact
     // by color, then the others in this thread. Nothing per cell is kept
     // from one pass to the other. The second compares; both add each
     // cell's norms to its chunk's sums, in the cells' order.
+    if (recovered.get_partitioner() != recovered_layout)
+      recovered.reinit(recovered_layout);
     recovered = 0.;
     recovered.zero_out_ghost_values();
     chunk_norms.assign(chunks.n_chunks() + 1, CellNorms());
@@ -440,11 +442,15 @@ namespace VPContact
                                      const double                youngs_modulus)
   {
     // The number of recovered components is fixed at compile time in the
-    // passes, so that their loops over the components are unrolled.
+    // passes, so that their loops over the components are unrolled. A run
+    // that estimates only some steps gives the recovered fields' memory
+    // back before the step's fields are written (see recovered).
     if (with_damage)
       passes<true>(n, entries, law);
     else
       passes<false>(n, entries, law);
+    if (every_steps > 1)
+      dealii::LinearAlgebra::distributed::Vector<double>().swap(recovered);
     return sum_norms(k, youngs_modulus);
   }
 

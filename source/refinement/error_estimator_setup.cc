@@ -53,9 +53,11 @@ namespace VPContact
     const MPI_Comm communicator = tria.get_communicator();
     const IndexSet components   = complete_index_set(n_components);
     lumped_mass.reinit(owned, relevant, communicator);
-    recovered.reinit(owned.tensor_product(components),
-                     relevant.tensor_product(components),
-                     communicator);
+    recovered_layout = std::make_shared<Utilities::MPI::Partitioner>(
+      owned.tensor_product(components),
+      relevant.tensor_product(components),
+      communicator);
+    recovered.reinit(recovered_layout);
     setup_nodes_and_mass();
     setup_chunks();
     setup_hanging_nodes();
@@ -129,8 +131,7 @@ namespace VPContact
               = lumped_mass.get_partitioner()->global_to_local(dofs[a]);
             has_constraints[i] = has_constraints[i]
                                  || space.constraints->is_constrained(dofs[a]);
-            Assert(recovered.get_partitioner()->global_to_local(dofs[a]
-                                                                * n_components)
+            Assert(recovered_layout->global_to_local(dofs[a] * n_components)
                      == node_locals[i * n_nodes + a] * n_components,
                    ExcInternalError());
           }

@@ -251,8 +251,13 @@ namespace VPContact
     /// The recovered fields in one ghosted vector, all components of a node
     /// side by side: node j's (scalar local index) component c at local
     /// entry j * n_components + c. One exchange per step moves them all,
-    /// and a cell reads one cache line per node.
+    /// and a cell reads one cache line per node. Its layout is kept for
+    /// the mesh; with Every steps > 1 the vector holds memory only while a
+    /// step is estimated (16.8 MB at 512^2 cells with damage), not while
+    /// the fields of that step are written after it, where a run's memory
+    /// peaks.
     dealii::LinearAlgebra::distributed::Vector<double> recovered;
+    std::shared_ptr<const Utilities::MPI::Partitioner> recovered_layout;
     dealii::LinearAlgebra::distributed::Vector<double> lumped_mass;
     /// The nodes of each owned cell: global indices, their positions in the
     /// local storage (owned and ghost) of the scalar layout, and whether
