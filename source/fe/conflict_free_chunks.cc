@@ -71,16 +71,16 @@ namespace VPContact
 
 
   void
-  ConflictFreeChunks::reinit(const std::vector<unsigned int> &positions,
-                             const unsigned int               entries,
-                             const std::vector<bool>         &plain,
-                             const unsigned int               chunk_size)
+  ConflictFreeChunks::reinit(std::vector<unsigned int> &&positions,
+                             const unsigned int          entries,
+                             const std::vector<bool>    &plain,
+                             const unsigned int          chunk_size)
   {
     AssertThrow(positions.size() == plain.size() * entries, ExcInternalError());
     constrained.clear();
     n_cells        = plain.size();
     n_entries      = entries;
-    cell_positions = positions;
+    cell_positions = std::move(positions);
     make_chunks(plain, chunk_size);
   }
 

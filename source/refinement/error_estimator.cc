@@ -281,8 +281,7 @@ namespace VPContact
         if (!space.constraints->is_constrained(dof))
           {
             double *const node
-              = values
-                + node_locals[i * n_nodes + a] * std::size_t(n_components);
+              = values + chunks.positions(i)[a] * std::size_t(n_components);
             for (unsigned int c = 0; c < n_components; ++c)
               node[c] += cell_moments[c];
           }
@@ -347,7 +346,7 @@ namespace VPContact
     double                                          f[max_points * n_c];
     point_values<damage>(i, entries, f, &point_strain[0], &point_zeta[0]);
     const double *const       values = recovered.begin();
-    const unsigned int *const nodes  = &node_locals[i * n_nodes];
+    const unsigned int *const nodes  = chunks.positions(i);
     double                    stress = 0, strain = 0, gradient = 0;
     for (unsigned int q = 0; q < n_q; ++q)
       {

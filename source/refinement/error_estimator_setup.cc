@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 namespace VPContact
 {
@@ -58,8 +59,10 @@ namespace VPContact
       relevant.tensor_product(components),
       communicator);
     recovered.reinit(recovered_layout);
-    setup_nodes_and_mass();
-    setup_chunks();
+    std::vector<unsigned int> positions;
+    std::vector<bool>         plain;
+    setup_nodes_and_mass(positions, plain);
+    setup_chunks(std::move(positions), plain);
     setup_hanging_nodes();
     setup_cell_data();
     indicators.reinit(tria.n_active_cells());
@@ -101,15 +104,18 @@ namespace VPContact
 
   template <int dim>
   void
-  ErrorEstimator<dim>::setup_nodes_and_mass()
+  ErrorEstimator<dim>::setup_nodes_and_mass(
+    std::vector<unsigned int> &positions,
+    std::vector<bool>         &plain)
   {
     // The nodes of every owned cell, by global index and by position in the
-    // local storage of the scalar layout, and the lumped mass
+    // local storage of the scalar layout (@p positions), whether a cell has
+    // no constrained (hanging) node (@p plain), and the lumped mass
     // sum_K int_K phi_i (condensed onto the nodes that carry the values
     // where the mesh has hanging nodes).
     node_indices.resize(cells->size() * n_nodes);
-    node_locals.resize(cells->size() * n_nodes);
-    has_constraints.assign(cells->size(), false);
+    positions.resize(cells->size() * n_nodes);
+    plain.assign(cells->size(), true);
     std::vector<types::global_dof_index> dofs(n_nodes);
     Vector<double>                       cell_mass(n_nodes);
     for (std::size_t i = 0; i < cells->size(); ++i)
@@ -127,12 +133,11 @@ namespace VPContact
         for (unsigned int a = 0; a < n_nodes; ++a)
           {
             node_indices[i * n_nodes + a] = dofs[a];
-            node_locals[i * n_nodes + a]
+            positions[i * n_nodes + a]
               = lumped_mass.get_partitioner()->global_to_local(dofs[a]);
-            has_constraints[i] = has_constraints[i]
-                                 || space.constraints->is_constrained(dofs[a]);
+            plain[i] = plain[i] && !space.constraints->is_constrained(dofs[a]);
             Assert(recovered_layout->global_to_local(dofs[a] * n_components)
-                     == node_locals[i * n_nodes + a] * n_components,
+                     == positions[i * n_nodes + a] * n_components,
                    ExcInternalError());
           }
       }
@@ -143,7 +148,8 @@ namespace VPContact
 
   template <int dim>
   void
-  ErrorEstimator<dim>::setup_chunks()
+  ErrorEstimator<dim>::setup_chunks(std::vector<unsigned int> &&positions,
+                                    const std::vector<bool>    &plain)
   {
     // The cells without hanging nodes add their moments to their nodes'
     // entries directly, chunk by chunk, color by color (see
@@ -152,10 +158,7 @@ namespace VPContact
     // number of threads keeps the order, and so the bits, the same on any
     // machine; 256 cells give a 512^2 mesh a thousand chunks for the
     // threads.
-    std::vector<bool> plain(has_constraints.size());
-    for (std::size_t i = 0; i < plain.size(); ++i)
-      plain[i] = !has_constraints[i];
-    chunks.reinit(node_locals, n_nodes, plain, 256);
+    chunks.reinit(std::move(positions), n_nodes, plain, 256);
   }
 
 
@@ -178,7 +181,7 @@ namespace VPContact
       for (unsigned int a = 0; a < n_nodes; ++a)
         {
           const auto dof   = node_indices[i * n_nodes + a];
-          const auto local = node_locals[i * n_nodes + a];
+          const auto local = chunks.positions(i)[a];
           if (!space.constraints->is_constrained(dof) || listed[local])
             continue;
           listed[local] = true;

@@ -113,7 +113,7 @@ namespace
           }
       }
     ConflictFreeChunks plan;
-    plan.reinit(positions, n, plain, 8);
+    plan.reinit(std::vector<unsigned int>(positions), n, plain, 8);
     std::vector<unsigned int> seen(cells.size(), 0);
     bool                      right = true;
     for (const auto &color : plan.colors())

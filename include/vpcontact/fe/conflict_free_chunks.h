@@ -57,14 +57,15 @@ namespace VPContact
      * vector (owned and ghost entries alike): cell i adds to
      * @p cell_positions[i * n_entries + a], a < @p n_entries, and it is
      * plain where @p plain[i]; the other cells are left to the caller.
-     * outdated() does not apply to this plan: the caller makes it again
-     * with the mesh.
+     * The plan keeps the positions (moved in), and positions() gives them
+     * for every cell, the other cells' too. outdated() does not apply to
+     * this plan: the caller makes it again with the mesh.
      */
     void
-    reinit(const std::vector<unsigned int> &cell_positions,
-           const unsigned int               n_entries,
-           const std::vector<bool>         &plain,
-           const unsigned int               chunk_size);
+    reinit(std::vector<unsigned int> &&cell_positions,
+           const unsigned int          n_entries,
+           const std::vector<bool>    &plain,
+           const unsigned int          chunk_size);
     /// The number of chunks.
     unsigned int
     n_chunks() const
@@ -99,7 +100,8 @@ namespace VPContact
     }
 
     /// The positions among the owned entries of the entries of plain cell
-    /// @p i (as many as its cell vector has).
+    /// @p i (as many as its cell vector has); for a plan made from
+    /// positions, those given, for every cell.
     const unsigned int *
     positions(const std::size_t i) const
     {

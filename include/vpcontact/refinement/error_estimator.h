@@ -174,9 +174,11 @@ namespace VPContact
     void
     make_own_space(const parallel::TriangulationBase<dim> &triangulation);
     void
-    setup_nodes_and_mass();
+    setup_nodes_and_mass(std::vector<unsigned int> &positions,
+                         std::vector<bool>         &plain);
     void
-    setup_chunks();
+    setup_chunks(std::vector<unsigned int> &&positions,
+                 const std::vector<bool>    &plain);
     void
     setup_hanging_nodes();
     void
@@ -259,12 +261,9 @@ namespace VPContact
     dealii::LinearAlgebra::distributed::Vector<double> recovered;
     std::shared_ptr<const Utilities::MPI::Partitioner> recovered_layout;
     dealii::LinearAlgebra::distributed::Vector<double> lumped_mass;
-    /// The nodes of each owned cell: global indices, their positions in the
-    /// local storage (owned and ghost) of the scalar layout, and whether
-    /// the cell has a constrained (hanging) node.
+    /// The nodes of each owned cell by global index (their positions in the
+    /// local storage of the scalar layout are the plan's positions()).
     std::vector<types::global_dof_index> node_indices;
-    std::vector<unsigned int>            node_locals;
-    std::vector<bool>                    has_constraints;
     /// The owned cells in chunks of consecutive cells, and the chunks in
     /// colors whose cells without hanging nodes share no node: the first
     /// pass adds their moments to the recovered fields from several
