@@ -185,8 +185,8 @@ def goals(best, sizes, algebras, every=None):
          "(deal.II's cells of every level, p4est's forest, the "
          "DoFHandler's indices), the matrix and its sparsity graph, the "
          "fields at the quadrature points, the points and entry positions "
-         "kept per cell, and the damage matrix in the forms its solver, "
-         "its product and its assembly use; with PETSc a copy of the "
+         "kept per cell, and the damage matrix once (the rows that its "
+         "solver and its products read); with PETSc a copy of the "
          "matrix in PETSc's format comes on top. The peer holds one PETSc "
          "matrix and GAMG's hierarchy."),
         ("CG + AMG speed-up from 1 to 2 ranks at least 1.7",

@@ -53,8 +53,6 @@ namespace VPContact
     status.assign(dofs.size(), BoundStatus::free);
     upper_at_start.assign(dofs.size(), false);
     front_size = 0;
-    neighbour_start.clear();
-    neighbour.clear();
   }
 
 
@@ -207,17 +205,17 @@ namespace VPContact
 
 
   std::vector<unsigned int>
-  DamageBounds::front(const LA::SparseMatrix &matrix)
+  DamageBounds::front(SupportProduct &product)
   {
     return (Utilities::MPI::n_mpi_processes(communicator) == 1 ?
-              front_by_graph(matrix) :
-              front_by_product(matrix));
+              front_by_graph(product.rows()) :
+              front_by_product(product));
   }
 
 
 
   std::vector<unsigned int>
-  DamageBounds::front_by_product(const LA::SparseMatrix &matrix) const
+  DamageBounds::front_by_product(SupportProduct &product) const
   {
     // With marks m = 1 on the nodes below 1, (K m)_i sums the entries K_ij
     // of the marked neighbours j of node i. Where kappa A is an M-matrix
@@ -227,8 +225,8 @@ namespace VPContact
     // product also reaches across ranks. The two vectors are kept (fresh ones
     // cost their page faults at every call, two or more per step) and are read
     // and written by position.
-    const IndexSet owned_rows = matrix.locally_owned_domain_indices();
-    if (front_marks.size() != matrix.n()
+    const IndexSet &owned_rows = product.rows().halo()->locally_owned_range();
+    if (front_marks.size() != owned_rows.size()
         || front_marks.locally_owned_elements() != owned_rows)
       {
         front_marks.reinit(owned_rows, communicator);
@@ -239,7 +237,7 @@ namespace VPContact
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (owned[i] && status[i] != BoundStatus::upper)
         marks[owned_position[i]] = 1.;
-    matrix.vmult(front_reach, front_marks);
+    product.vmult(front_reach, front_marks);
     const double *const       reach = front_reach.begin();
     std::vector<unsigned int> on_front;
     for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -251,85 +249,82 @@ namespace VPContact
 
 
 
+  template <typename Visit>
+  void
+  DamageBounds::for_each_neighbour(const unsigned int i,
+                                   const OwnedRows   &rows,
+                                   const Visit       &visit) const
+  {
+    // Rows of constrained (hanging) nodes carry no bounds, and are nobody's
+    // neighbour here, as their marks are zero in the product.
+    const unsigned int  row     = owned_position[i];
+    const unsigned int *columns = rows.columns().data();
+    const double       *values  = rows.values().data();
+    for (unsigned int e = rows.row_start()[row]; e < rows.row_start()[row + 1];
+         ++e)
+      {
+        const int j
+          = (columns[e] < node_of_owned.size() ? node_of_owned[columns[e]] :
+                                                 -1);
+        if (j >= 0 && static_cast<unsigned int>(j) != i && values[e] != 0.
+            && visit(static_cast<unsigned int>(j)))
+          return;
+      }
+  }
+
+
+
   std::vector<unsigned int>
-  DamageBounds::front_by_graph(const LA::SparseMatrix &matrix)
+  DamageBounds::front_by_graph(const OwnedRows &rows) const
   {
     // On one rank every neighbour is a node of this rank, and the front is
     // found from the rows of the upper nodes alone: once the damage has
     // spread, a fraction of the rows the product would visit. On an
-    // M-matrix the same nodes as
-    // front_by_product(); elsewhere every neighbour counts.
-    if (neighbour_start.size() != dofs.size() + 1)
-      {
-        const Epetra_CrsMatrix &K = matrix.trilinos_matrix();
-        // Rows of constrained (hanging) nodes carry no bounds, and are
-        // nobody's neighbour here, as their marks are zero in the product.
-        constexpr unsigned int    none = numbers::invalid_unsigned_int;
-        std::vector<unsigned int> node_of_row(K.NumMyRows(), none);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          node_of_row[owned_position[i]] = i;
-        neighbour_start.assign(1, 0);
-        neighbour.clear();
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          {
-            int     n_entries = 0;
-            double *values    = nullptr;
-            int    *columns   = nullptr;
-            K.ExtractMyRowView(owned_position[i], n_entries, values, columns);
-            for (int e = 0; e < n_entries; ++e)
-              {
-                const unsigned int j
-                  = node_of_row[K.RowMap().LID(K.ColMap().GID(columns[e]))];
-                if (j != none && j != i && values[e] != 0.)
-                  neighbour.push_back(j);
-              }
-            neighbour_start.push_back(neighbour.size());
-          }
-        // Grown by doubling: the spare half would stay for the run.
-        neighbour.shrink_to_fit();
-        neighbour_start.shrink_to_fit();
-      }
+    // M-matrix the same nodes as front_by_product(); elsewhere every
+    // neighbour counts.
     std::vector<unsigned int> on_front;
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (status[i] == BoundStatus::upper)
-        for (unsigned int e = neighbour_start[i]; e < neighbour_start[i + 1];
-             ++e)
-          if (status[neighbour[e]] != BoundStatus::upper)
-            {
-              on_front.push_back(i);
-              break;
-            }
+        for_each_neighbour(i, rows, [&](const unsigned int j) {
+          if (status[j] == BoundStatus::upper)
+            return false;
+          on_front.push_back(i);
+          return true;
+        });
     return on_front;
   }
 
 
 
   std::vector<unsigned int>
-  DamageBounds::free_next_ring(const std::vector<unsigned int> &ring)
+  DamageBounds::free_next_ring(const std::vector<unsigned int> &ring,
+                               const OwnedRows                 &rows)
   {
     // Every upper node next to a node below 1 was on the front, and is
     // free now: the next front lies next to the ring just freed.
     std::vector<unsigned int> next;
     for (const unsigned int i : ring)
-      for (unsigned int e = neighbour_start[i]; e < neighbour_start[i + 1]; ++e)
-        if (status[neighbour[e]] == BoundStatus::upper)
+      for_each_neighbour(i, rows, [&](const unsigned int j) {
+        if (status[j] == BoundStatus::upper)
           {
-            status[neighbour[e]] = BoundStatus::free;
-            next.push_back(neighbour[e]);
+            status[j] = BoundStatus::free;
+            next.push_back(j);
           }
+        return false;
+      });
     return next;
   }
 
 
 
   void
-  DamageBounds::begin_step(const LA::SparseMatrix &matrix)
+  DamageBounds::begin_step(SupportProduct &product)
   {
     upper_at_start.resize(dofs.size());
     for (unsigned int i = 0; i < dofs.size(); ++i)
       upper_at_start[i] = (status[i] == BoundStatus::upper);
     front_size
-      = Utilities::MPI::sum(static_cast<unsigned int>(front(matrix).size()),
+      = Utilities::MPI::sum(static_cast<unsigned int>(front(product).size()),
                             communicator);
   }
 
@@ -349,8 +344,8 @@ namespace VPContact
 
 
   unsigned int
-  DamageBounds::free_ahead_of_front(const LA::SparseMatrix &matrix,
-                                    const unsigned int      rings)
+  DamageBounds::free_ahead_of_front(SupportProduct    &product,
+                                    const unsigned int rings)
   {
     // The first ring is the front; on one rank each further ring is found
     // next to the one before, on several by the product again (a ring may
@@ -362,12 +357,12 @@ namespace VPContact
       {
         if (r == 0 || !one_rank)
           {
-            ring = front(matrix);
+            ring = front(product);
             for (const unsigned int i : ring)
               status[i] = BoundStatus::free;
           }
         else
-          ring = free_next_ring(ring);
+          ring = free_next_ring(ring, product.rows());
         n_freed += ring.size();
       }
     return Utilities::MPI::sum(n_freed, communicator);

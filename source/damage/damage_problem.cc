@@ -186,10 +186,10 @@ namespace VPContact
     // The bound iteration's complementarity test is scaled by the matrix
     // diagonal, which the mass dominates on coarse meshes and the diffusion
     // on fine ones (see DamageBounds::set_complementarity_scale()).
-    LA::MPI::Vector diagonal(system.owned(), communicator);
-    for (const auto dof : system.owned())
-      diagonal(dof) = system.matrix().diag_element(dof);
-    diagonal.compress(VectorOperation::insert);
+    LA::MPI::Vector  diagonal(system.owned(), communicator);
+    const OwnedRows &rows = system.support().rows();
+    for (unsigned int i = 0; i < rows.n_rows(); ++i)
+      diagonal.begin()[i] = rows.diagonal(i);
     LA::MPI::Vector ghosted(system.owned(), system.relevant(), communicator);
     ghosted = diagonal;
     bounds.set_complementarity_scale(ghosted);

@@ -62,11 +62,10 @@ namespace VPContact
     // M zeta_{n-1}/k. First the fast search (see find_sets_fast()); should
     // it not settle, the plain method from the sets of the previous step,
     // every solve to the Solver tolerance.
-    const LA::SparseMatrix &K = system.matrix();
-    LA::MPI::Vector         step_rhs(old_damage);
-    K.vmult(step_rhs, old_damage);
+    LA::MPI::Vector step_rhs(old_damage);
+    system.vmult_on_support(step_rhs, old_damage);
     step_rhs.sadd(-1., 1., load);
-    bounds.begin_step(K);
+    bounds.begin_step(system.support());
     system.begin_step();
     const std::vector<BoundStatus> previous_sets = bounds.sets();
     if (!find_sets_fast(step_rhs))
@@ -122,7 +121,7 @@ namespace VPContact
     // as it moved in the previous step (see
     // DamageBounds::free_ahead_of_front()), which saves solves on fine
     // meshes, where the front moves by several rings in a step.
-    bounds.free_ahead_of_front(system.matrix(), rings_ahead);
+    bounds.free_ahead_of_front(system.support(), rings_ahead);
 
     // From here on the passes between the solves visit the nodes the solves
     // can change (see DamageWorkSet), where the solver takes the free set

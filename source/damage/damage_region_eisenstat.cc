@@ -64,6 +64,9 @@ namespace VPContact
   void
   DamageRegionSolver::collect_cut_coupling()
   {
+    const unsigned int *const row_start = rows->row_start().data();
+    const unsigned int *const column    = rows->columns().data();
+    const double *const       value     = rows->values().data();
     // The entries of the region's rows in columns of other ranks: P is
     // built from this rank's rows alone (block Jacobi between ranks, as
     // for (M)IC(0)), so K = C + C^T + (K_kk - 2 D) + K_off, and the

@@ -1,12 +1,10 @@
 // CG for the damage problem on the free nodes, with (M)IC(0) of a region
 // around them (see damage_region_solver.h).
 #include <vpcontact/damage/damage_region_solver.h>
-#include <vpcontact/damage/support_product.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_index_access.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,28 +12,19 @@
 namespace VPContact
 {
   void
-  DamageRegionSolver::initialize(const LA::SparseMatrix &matrix,
-                                 const IndexSet         &owned,
-                                 const MPI_Comm          communicator_in,
-                                 const Preconditioner    kind_in)
+  DamageRegionSolver::initialize(const OwnedRows     &rows_in,
+                                 const Preconditioner kind_in)
   {
-    communicator  = communicator_in;
+    rows          = &rows_in;
+    halo          = rows->halo();
+    communicator  = halo->get_mpi_communicator();
     kind          = kind_in;
     serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
-    n_owned       = owned.n_elements();
-
-    // The ghosted layout the products read: the owned entries, then every
-    // other column of the owned rows, as deal.II's partitioner numbers
-    // them; the columns are kept as positions in it.
-    halo = std::make_shared<Utilities::MPI::Partitioner>(
-      owned,
-      columns_of_owned_rows(matrix, owned),
-      communicator);
+    n_owned       = rows->n_rows();
     const unsigned int n_ghosts = halo->n_ghost_indices();
     halo_owned.assign(n_owned, 0.);
     halo_send.assign(halo->n_import_indices(), 0.);
     ghost_values.assign(n_ghosts, 0.);
-    copy_owned_rows(matrix.trilinos_matrix());
 
     is_free.assign(n_owned, false);
     free_nodes.clear();
@@ -45,43 +34,6 @@ namespace VPContact
     direction.assign(n_owned + n_ghosts, 0.);
     region_valid = false;
     builds       = 0;
-  }
-
-
-
-  void
-  DamageRegionSolver::copy_owned_rows(const Epetra_CrsMatrix &K)
-  {
-    // The local storage of an owned vector lists the owned indices in
-    // ascending order, as the row map of the matrix does, so a row's local
-    // index is its owned position. Reserved to the size, so that the copy
-    // holds no doubled capacity of push_back's growth for the rest of the
-    // run.
-    AssertThrow(static_cast<unsigned int>(K.NumMyRows()) == n_owned,
-                ExcInternalError());
-    std::vector<unsigned int> position_of_column(K.NumMyCols());
-    for (unsigned int c = 0; c < position_of_column.size(); ++c)
-      position_of_column[c]
-        = halo->global_to_local(TrilinosWrappers::global_index(K.ColMap(), c));
-    row_start.assign(1, 0);
-    row_start.reserve(n_owned + 1);
-    column.clear();
-    column.reserve(K.NumMyNonzeros());
-    value.clear();
-    value.reserve(K.NumMyNonzeros());
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        int     n_entries = 0;
-        double *values    = nullptr;
-        int    *indices   = nullptr;
-        K.ExtractMyRowView(i, n_entries, values, indices);
-        for (int e = 0; e < n_entries; ++e)
-          {
-            column.push_back(position_of_column[indices[e]]);
-            value.push_back(values[e]);
-          }
-        row_start.push_back(column.size());
-      }
   }
 
 
@@ -113,6 +65,8 @@ namespace VPContact
   void
   DamageRegionSolver::build_region(const unsigned int rings)
   {
+    const unsigned int *const row_start = rows->row_start().data();
+    const unsigned int *const column    = rows->columns().data();
     // R: the free nodes, then ring after ring of their owned neighbours in
     // the matrix graph (ghost columns are left to their own rank).
     std::vector<bool>         in_region(is_free);
@@ -151,6 +105,8 @@ namespace VPContact
   void
   DamageRegionSolver::order_by_levels()
   {
+    const unsigned int *const row_start = rows->row_start().data();
+    const unsigned int *const column    = rows->columns().data();
     // The triangular sweeps of the preconditioner are chains: in the
     // forward sweep node k waits for its neighbours before it, the last of
     // which was usually computed just before, so the processor runs one
@@ -228,6 +184,9 @@ namespace VPContact
   void
   DamageRegionSolver::collect_lower_triangle()
   {
+    const unsigned int *const row_start = rows->row_start().data();
+    const unsigned int *const column    = rows->columns().data();
+    const double *const       value     = rows->values().data();
     // The lower triangle of K_RR in region indices, each row sorted; the
     // factorization overwrites it with L.
     const unsigned int n = region.size();
@@ -354,7 +313,10 @@ namespace VPContact
                                  const double        *src,
                                  const double        *p)
   {
-    double p_dot_dst = 0;
+    const unsigned int *const row_start = rows->row_start().data();
+    const unsigned int *const column    = rows->columns().data();
+    const double *const       value     = rows->values().data();
+    double                    p_dot_dst = 0;
     for (const unsigned int i : free_nodes)
       {
         double s = 0;

@@ -1,96 +1,56 @@
 // SupportProduct: K x summed over the nonzero entries of x.
 #include <vpcontact/damage/support_product.h>
-#include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
 namespace VPContact
 {
-  IndexSet
-  columns_of_owned_rows(const LA::SparseMatrix &matrix, const IndexSet &owned)
-  {
-    const Epetra_BlockMap &column_map = matrix.trilinos_matrix().ColMap();
-    IndexSet               columns(owned);
-    for (int c = 0; c < column_map.NumMyElements(); ++c)
-      columns.add_index(TrilinosWrappers::global_index(column_map, c));
-    columns.compress();
-    return columns;
-  }
-
-
-
-  std::vector<unsigned int>
-  ghosted_positions_of_columns(const LA::SparseMatrix &matrix,
-                               const Epetra_BlockMap  &ghosted_map)
-  {
-    const Epetra_BlockMap    &column_map = matrix.trilinos_matrix().ColMap();
-    std::vector<unsigned int> positions(column_map.NumMyElements());
-    for (unsigned int c = 0; c < positions.size(); ++c)
-      {
-        const int g
-          = ghosted_map.LID(TrilinosWrappers::global_index(column_map, c));
-        AssertThrow(g >= 0, ExcInternalError());
-        positions[c] = g;
-      }
-    return positions;
-  }
-
-
-
   void
-  SupportProduct::initialize(const LA::SparseMatrix &matrix,
-                             const IndexSet         &owned,
-                             const MPI_Comm          communicator)
+  SupportProduct::initialize(const OwnedRows &rows)
   {
-    serial_layout = (Utilities::MPI::n_mpi_processes(communicator) == 1);
-    x_ghosted.reinit(owned, columns_of_owned_rows(matrix, owned), communicator);
-    const Epetra_BlockMap &ghosted_map = x_ghosted.trilinos_vector().Map();
-    LA::MPI::Vector        owned_vector(owned, communicator);
-    importer
-      = std::make_unique<Epetra_Import>(ghosted_map,
-                                        owned_vector.trilinos_vector().Map());
+    matrix_rows      = &rows;
+    n_owned          = rows.n_rows();
+    const auto &halo = *rows.halo();
+    serial_layout
+      = (Utilities::MPI::n_mpi_processes(halo.get_mpi_communicator()) == 1);
+    const unsigned int n_ghosts = halo.n_ghost_indices();
+    ghost_x.assign(n_ghosts, 0.);
+    send_buffer.assign(halo.n_import_indices(), 0.);
 
-    const unsigned int n_ghosted = ghosted_map.NumMyElements();
-    ghosted_of_owned.assign(owned.n_elements(), 0);
-    ghost_positions.clear();
-    for (unsigned int g = 0; g < n_ghosted; ++g)
-      {
-        const auto index = TrilinosWrappers::global_index(ghosted_map, g);
-        if (owned.is_element(index))
-          ghosted_of_owned[owned.index_within_set(index)] = g;
-        else
-          ghost_positions.push_back(g);
-      }
-
-    // The transpose of the owned rows, in two passes over their entries:
-    // count the entries of each column, then place them.
-    const std::vector<unsigned int> ghosted_of_column
-      = ghosted_positions_of_columns(matrix, ghosted_map);
-    const Epetra_CrsMatrix &K              = matrix.trilinos_matrix();
-    const auto              for_each_entry = [&](const auto &visit) {
-      for (int i = 0; i < K.NumMyRows(); ++i)
-        {
-          int     n_entries = 0;
-          double *values    = nullptr;
-          int    *indices   = nullptr;
-          K.ExtractMyRowView(i, n_entries, values, indices);
-          for (int e = 0; e < n_entries; ++e)
-            visit(i, ghosted_of_column[indices[e]], values[e]);
-        }
+    // The entries in ghost columns, transposed in two passes over the
+    // rows' ghost parts: count each column's entries, then place them (in
+    // ascending rows, as a column of the rows lists them).
+    const std::vector<unsigned int> &row_start = rows.row_start();
+    const std::vector<unsigned int> &columns   = rows.columns();
+    const auto for_each_ghost_entry            = [&](const auto &visit) {
+      for (unsigned int i = 0; i < n_owned; ++i)
+        for (unsigned int e = row_start[i] + rows.owned_columns(i).size();
+             e < row_start[i + 1];
+             ++e)
+          visit(i, columns[e] - n_owned, rows.values()[e]);
     };
-    column_start.assign(n_ghosted + 1, 0);
-    for_each_entry([&](int, unsigned int g, double) { ++column_start[g + 1]; });
-    for (unsigned int g = 0; g < n_ghosted; ++g)
-      column_start[g + 1] += column_start[g];
-    row.resize(column_start.back());
-    value.resize(column_start.back());
-    std::vector<unsigned int> next(column_start.begin(),
-                                   column_start.end() - 1);
-    for_each_entry([&](int i, unsigned int g, double v) {
-      row[next[g]]     = i;
-      value[next[g]++] = v;
+    ghost_start.assign(n_ghosts + 1, 0);
+    for_each_ghost_entry(
+      [&](unsigned int, unsigned int g, double) { ++ghost_start[g + 1]; });
+    for (unsigned int g = 0; g < n_ghosts; ++g)
+      ghost_start[g + 1] += ghost_start[g];
+    ghost_row.resize(ghost_start.back());
+    ghost_value.resize(ghost_start.back());
+    std::vector<unsigned int> next(ghost_start.begin(), ghost_start.end() - 1);
+    for_each_ghost_entry([&](unsigned int i, unsigned int g, double v) {
+      ghost_row[next[g]]     = i;
+      ghost_value[next[g]++] = v;
     });
+  }
+
+
+
+  const OwnedRows &
+  SupportProduct::rows() const
+  {
+    Assert(matrix_rows != nullptr, ExcMessage("initialize() first."));
+    return *matrix_rows;
   }
 
 
@@ -98,15 +58,12 @@ namespace VPContact
   void
   SupportProduct::vmult(LA::MPI::Vector &y, const LA::MPI::Vector &x)
   {
-    // Rows are owned positions (the row map of the matrix lists the owned
-    // indices in ascending order, as the owned vectors do).
-    double            *y_values = y.begin();
-    const unsigned int n_owned  = ghosted_of_owned.size();
+    double *y_values = y.begin();
     std::fill(y_values, y_values + n_owned, 0.);
     const double *x_values = x.begin();
     for (unsigned int j = 0; j < n_owned; ++j)
       if (x_values[j] != 0.)
-        add_column(y_values, ghosted_of_owned[j], x_values[j]);
+        add_column(y_values, j, x_values[j]);
     add_ghost_columns(y_values, x);
   }
 
@@ -125,7 +82,7 @@ namespace VPContact
     const double *x_values = x.begin();
     for (const unsigned int j : rows)
       if (x_values[j] != 0.)
-        add_column(y_values, ghosted_of_owned[j], x_values[j]);
+        add_column(y_values, j, x_values[j]);
     add_ghost_columns(y_values, x);
   }
 
@@ -136,14 +93,19 @@ namespace VPContact
   {
     if (serial_layout)
       return;
-    const int error = x_ghosted.trilinos_vector().Import(x.trilinos_vector(),
-                                                         *importer,
-                                                         Insert);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    const double *ghosted_values = x_ghosted.begin();
-    for (const unsigned int g : ghost_positions)
-      if (ghosted_values[g] != 0.)
-        add_column(y_values, g, ghosted_values[g]);
+    const auto &halo = *matrix_rows->halo();
+    halo.export_to_ghosted_array_start<double>(
+      0,
+      make_array_view<const double>(x.begin(), x.begin() + n_owned),
+      make_array_view(send_buffer),
+      make_array_view(ghost_x),
+      requests);
+    halo.export_to_ghosted_array_finish<double>(make_array_view(ghost_x),
+                                                requests);
+    for (unsigned int g = 0; g + 1 < ghost_start.size(); ++g)
+      if (ghost_x[g] != 0.)
+        for (unsigned int e = ghost_start[g]; e < ghost_start[g + 1]; ++e)
+          y_values[ghost_row[e]] += ghost_value[e] * ghost_x[g];
   }
 
 
@@ -151,9 +113,7 @@ namespace VPContact
   ArrayView<const unsigned int>
   SupportProduct::rows_of_owned(const unsigned int position) const
   {
-    const unsigned int g = ghosted_of_owned[position];
-    return {row.data() + column_start[g],
-            column_start[g + 1] - column_start[g]};
+    return matrix_rows->owned_columns(position);
   }
 
 
@@ -161,11 +121,6 @@ namespace VPContact
   std::vector<unsigned int>
   SupportProduct::rows_of_ghosts() const
   {
-    std::vector<unsigned int> rows;
-    for (const unsigned int g : ghost_positions)
-      rows.insert(rows.end(),
-                  row.begin() + column_start[g],
-                  row.begin() + column_start[g + 1]);
-    return rows;
+    return ghost_row;
   }
 } // namespace VPContact

@@ -67,8 +67,12 @@ namespace
     DamageBounds bounds;
     bounds.setup(relevant, owned, mass, comm);
     bounds.update(residual, damage, k);
-    bounds.begin_step(matrix);
-    const unsigned int freed      = bounds.free_ahead_of_front(matrix, rings);
+    OwnedRows rows;
+    rows.reinit(matrix, owned, comm);
+    SupportProduct product;
+    product.initialize(rows);
+    bounds.begin_step(product);
+    const unsigned int freed      = bounds.free_ahead_of_front(product, rings);
     const auto [n_lower, n_upper] = bounds.count();
     const double rings_moved      = bounds.rings_moved();
 

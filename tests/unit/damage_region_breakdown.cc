@@ -34,13 +34,16 @@ main(int argc, char **argv)
   LA::SparseMatrix matrix;
   copy_to_trilinos(kershaw, all, comm, matrix);
 
+  OwnedRows rows;
+  rows.reinit(matrix, all, comm);
+
   for (const auto kind :
        {DamageRegionSolver::Preconditioner::incomplete_cholesky,
         DamageRegionSolver::Preconditioner::modified_incomplete_cholesky,
         DamageRegionSolver::Preconditioner::diagonal})
     {
       DamageRegionSolver solver;
-      solver.initialize(matrix, all, comm, kind);
+      solver.initialize(rows, kind);
       solver.begin_step();
 
       for (const bool hold_node_1 : {false, true})

@@ -33,13 +33,16 @@ main(int argc, char **argv)
   LA::SparseMatrix matrix;
   copy_to_trilinos(K, all, comm, matrix);
 
+  OwnedRows rows;
+  rows.reinit(matrix, all, comm);
+
   for (const auto kind :
        {DamageRegionSolver::Preconditioner::modified_incomplete_cholesky,
         DamageRegionSolver::Preconditioner::incomplete_cholesky,
         DamageRegionSolver::Preconditioner::diagonal})
     {
       DamageRegionSolver solver;
-      solver.initialize(matrix, all, comm, kind);
+      solver.initialize(rows, kind);
       solver.begin_step();
       LA::MPI::Vector b(all, comm), x(all, comm);
       for (unsigned int i = 0; i < nodes; ++i)

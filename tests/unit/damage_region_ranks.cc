@@ -50,13 +50,16 @@ main(int argc, char **argv)
   LA::SparseMatrix matrix;
   copy_to_trilinos(K, owned, comm, matrix);
 
+  OwnedRows rows;
+  rows.reinit(matrix, owned, comm);
+
   for (const auto kind :
        {DamageRegionSolver::Preconditioner::incomplete_cholesky,
         DamageRegionSolver::Preconditioner::modified_incomplete_cholesky,
         DamageRegionSolver::Preconditioner::diagonal})
     {
       DamageRegionSolver solver;
-      solver.initialize(matrix, owned, comm, kind);
+      solver.initialize(rows, kind);
       solver.begin_step();
       LA::MPI::Vector           b(owned, comm), x(owned, comm);
       std::vector<unsigned int> held_positions;

@@ -50,8 +50,10 @@ main(int argc, char **argv)
   const Q1PatternMatrix   q1(comm);
   const IndexSet         &owned = q1.owned;
   const LA::SparseMatrix &K     = q1.K;
-  SupportProduct          product;
-  product.initialize(K, owned, comm);
+  OwnedRows               matrix_rows;
+  matrix_rows.reinit(K, owned, comm);
+  SupportProduct product;
+  product.initialize(matrix_rows);
 
   // x nonzero at every 13th node; the work set of those it owns.
   LA::MPI::Vector           x(owned, comm), y(owned, comm), y_on(owned, comm);

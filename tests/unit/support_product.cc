@@ -23,8 +23,10 @@ main(int argc, char **argv)
   const IndexSet         &owned = q1.owned;
   const LA::SparseMatrix &K     = q1.K;
 
+  OwnedRows rows;
+  rows.reinit(K, owned, comm);
   SupportProduct product;
-  product.initialize(K, owned, comm);
+  product.initialize(rows);
 
   const unsigned int n = q1.dof_handler.n_dofs();
   for (const unsigned int stride : {13u, 1u, 0u})

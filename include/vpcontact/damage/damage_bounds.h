@@ -3,10 +3,10 @@
 #ifndef vpcontact_damage_bounds_h
 #define vpcontact_damage_bounds_h
 
+#include <vpcontact/damage/support_product.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
 #include <deal.II/base/index_set.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <utility>
@@ -159,12 +159,13 @@ namespace VPContact
      * The motion of the front of the upper set (ζ = 1) over a step, in
      * rings of nodes. begin_step() records the upper set and the number of
      * its nodes on the front (those with a neighbour below 1: an entry of
-     * @p matrix, the damage matrix in the numbering of the bounds);
+     * the damage matrix K, which @p product multiplies, in the numbering
+     * of the bounds);
      * rings_moved() returns the number of nodes that have left the upper
      * set since, divided by that front size.
      */
     void
-    begin_step(const LA::SparseMatrix &matrix);
+    begin_step(SupportProduct &product);
 
     double
     rings_moved() const;
@@ -183,8 +184,7 @@ namespace VPContact
      * exact solve as always.
      */
     unsigned int
-    free_ahead_of_front(const LA::SparseMatrix &matrix,
-                        const unsigned int      rings);
+    free_ahead_of_front(SupportProduct &product, const unsigned int rings);
 
     /// The sets of all nodes, to go back to with restore_sets().
     const std::vector<BoundStatus> &
@@ -246,31 +246,37 @@ namespace VPContact
     /// The owned upper nodes with a neighbour below 1 (see
     /// front_by_product() and front_by_graph()).
     std::vector<unsigned int>
-    front(const LA::SparseMatrix &matrix);
+    front(SupportProduct &product);
 
-    /// front() on several ranks: one matrix-vector product with @p matrix.
+    /// front() on several ranks: one matrix-vector product with K.
     std::vector<unsigned int>
-    front_by_product(const LA::SparseMatrix &matrix) const;
+    front_by_product(SupportProduct &product) const;
 
-    /// front() on one rank: a pass over the rows of the upper nodes of
-    /// the graph of @p matrix (kept from the first call after setup()).
+    /// front() on one rank: a pass over the rows of K of the upper nodes
+    /// (@p rows).
     std::vector<unsigned int>
-    front_by_graph(const LA::SparseMatrix &matrix);
+    front_by_graph(const OwnedRows &rows) const;
 
     /// On one rank: the upper nodes next to the nodes of @p ring, which
-    /// are free; they are freed too.
+    /// are free, in the graph of @p rows; they are freed too.
     std::vector<unsigned int>
-    free_next_ring(const std::vector<unsigned int> &ring);
+    free_next_ring(const std::vector<unsigned int> &ring,
+                   const OwnedRows                 &rows);
+
+    /// Pass each neighbour j of node @p i in the graph of @p rows (one rank:
+    /// an entry K_ij that is not zero, at a node with bounds, i itself left
+    /// out) to @p visit, until it returns true.
+    template <typename Visit>
+    void
+    for_each_neighbour(const unsigned int i,
+                       const OwnedRows   &rows,
+                       const Visit       &visit) const;
 
     /// The marks of front_by_product() and their product with the matrix,
     /// kept.
     mutable LA::MPI::Vector front_marks;
     mutable LA::MPI::Vector front_reach;
-    /// One rank: the neighbours of each node in the matrix graph (entries
-    /// that are not zero, the node itself left out), in CSR over the nodes.
-    std::vector<unsigned int> neighbour_start;
-    std::vector<unsigned int> neighbour;
-    MPI_Comm                  communicator = MPI_COMM_WORLD;
+    MPI_Comm                communicator = MPI_COMM_WORLD;
   };
 } // namespace VPContact
 

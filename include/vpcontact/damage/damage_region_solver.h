@@ -6,13 +6,11 @@
 #define vpcontact_damage_region_solver_h
 
 #include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/owned_rows.h>
 
-#include <deal.II/base/index_set.h>
 #include <deal.II/base/partitioner.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <Epetra_CrsMatrix.h>
 #include <memory>
 #include <vector>
 
@@ -75,15 +73,13 @@ namespace VPContact
     };
 
     /**
-     * Keep the owned rows (@p owned) of @p matrix as a local CSR matrix,
-     * with the columns as positions in a ghosted vector over them (and,
-     * for the region, as owned positions). Once per mesh and step size.
+     * Solve with the matrix of @p rows (kept by reference: they must
+     * outlive this object's use), whose columns are positions in a ghosted
+     * vector over them (and, for the region, owned positions). Once per
+     * mesh and step size.
      */
     void
-    initialize(const LA::SparseMatrix &matrix,
-               const IndexSet         &owned,
-               const MPI_Comm          communicator,
-               const Preconditioner    kind);
+    initialize(const OwnedRows &rows, const Preconditioner kind);
 
     /// Forget the region: the next solve builds it from its free set.
     void
@@ -126,11 +122,6 @@ namespace VPContact
     target_of_last_solve() const;
 
   private:
-    /// K's owned rows as CSR, the columns as positions in the halo's
-    /// ghosted layout.
-    void
-    copy_owned_rows(const Epetra_CrsMatrix &K);
-
     /// solve_free() on the local storage of the vectors (owned positions).
     unsigned int
     solve_free(const double                    *b,
@@ -271,11 +262,9 @@ namespace VPContact
 
     // K's owned rows: CSR, columns as positions in the ghosted layout of
     // the halo (the owned positions, then the ghost entries).
-    std::vector<unsigned int> row_start;
-    std::vector<unsigned int> column;
-    std::vector<double>       value;
-    unsigned int              n_owned = 0;
-    Preconditioner kind = Preconditioner::modified_incomplete_cholesky;
+    const OwnedRows *rows    = nullptr;
+    unsigned int     n_owned = 0;
+    Preconditioner   kind    = Preconditioner::modified_incomplete_cholesky;
 
     // The free set of the current solve.
     std::vector<bool>         is_free;

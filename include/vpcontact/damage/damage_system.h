@@ -126,7 +126,13 @@ namespace VPContact
     LA::SparseMatrix &
     matrix();
 
-    /// Build the preconditioner of the assembled matrix.
+    /**
+     * Take the assembled matrix into the rows that the products and the
+     * region solver read (OwnedRows) and build the preconditioner. Where
+     * no library solver reads the Trilinos matrix (the region solver,
+     * without SNES VI) it is released: the rows are then the only copy of
+     * K, and matrix() is valid again after the next reinit().
+     */
     void
     initialize_preconditioner();
 
@@ -143,9 +149,12 @@ namespace VPContact
                   const LA::MPI::Vector           &x,
                   const std::vector<unsigned int> &rows);
 
-    /// The product, for the neighbours of a node in the matrix graph.
+    /// The product, for the neighbours of a node in the matrix graph and
+    /// the front of the damage bounds.
     const SupportProduct &
     support() const;
+    SupportProduct &
+    support();
 
     /// A new time step: the region solver builds its region again from
     /// the free set of the step's first solve.
@@ -244,6 +253,7 @@ namespace VPContact
     SpdMethod                  method  = SpdMethod::cg_incomplete_cholesky;
     LinearAlgebra              package = LinearAlgebra::trilinos;
     LA::SparseMatrix           system_matrix;
+    OwnedRows                  matrix_rows;
     std::unique_ptr<SpdSolver> solver;
     /// The program's own solver on a region around the free nodes, for the
     /// first two choices of Solver/Damage preconditioner.

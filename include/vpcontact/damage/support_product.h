@@ -4,37 +4,17 @@
 #define vpcontact_support_product_h
 
 #include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/owned_rows.h>
 
 #include <deal.II/base/array_view.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <Epetra_Import.h>
-#include <memory>
+#include <mpi.h>
 #include <vector>
 
 namespace VPContact
 {
   using namespace dealii;
-
-  /**
-   * The indices a ghosted vector needs for the products of this rank's rows
-   * of @p matrix: the owned ones (@p owned) and every column of the owned
-   * rows. (Not the relevant dofs of the mesh: on adaptive meshes the rows
-   * gather entries from other ranks' cells whose columns this rank does
-   * not see.)
-   */
-  IndexSet
-  columns_of_owned_rows(const LA::SparseMatrix &matrix, const IndexSet &owned);
-
-  /**
-   * For each local column of @p matrix, its position in the local storage
-   * of a vector with the layout @p ghosted_map, which must hold it (see
-   * columns_of_owned_rows()).
-   */
-  std::vector<unsigned int>
-  ghosted_positions_of_columns(const LA::SparseMatrix &matrix,
-                               const Epetra_BlockMap  &ghosted_map);
 
   /**
    * y = K x for a symmetric matrix K, summed column by column over the
@@ -47,20 +27,24 @@ namespace VPContact
    * scene). Trilinos' product visits every row; at 512^2 cells the two
    * took 3.4 s of the 22.6 s of damage solves of a run.
    *
-   * The columns of this rank's rows are kept by column (the transpose of
-   * the local rows, in the layout of a ghosted vector), so that a nonzero
-   * x_j adds K_ij x_j to the owned rows i that have j as a column. On
-   * several ranks x is first imported into that ghosted layout: a ghost
-   * entry of x is a column of some owned rows too.
+   * K is symmetric, so the column j of the owned rows is the owned part of
+   * row j (OwnedRows keeps it as a prefix of the row, in ascending order):
+   * a nonzero x_j adds K_ji x_j to the owned rows i among row j's columns.
+   * On several ranks a ghost entry x_g is a column of some owned rows too;
+   * those few entries are kept transposed here, and x's ghost entries come
+   * through the partitioner of the rows.
    */
   class SupportProduct
   {
   public:
-    /// Keep the owned rows of @p matrix by column. Once per matrix.
+    /// Read K from @p rows (kept by reference: they must outlive this
+    /// object's use), and transpose its entries in ghost columns.
     void
-    initialize(const LA::SparseMatrix &matrix,
-               const IndexSet         &owned,
-               const MPI_Comm          communicator);
+    initialize(const OwnedRows &rows);
+
+    /// The rows the product reads.
+    const OwnedRows &
+    rows() const;
 
     /// @p y = K @p x (both owned vectors of the matrix's row layout).
     void
@@ -88,33 +72,37 @@ namespace VPContact
     rows_of_ghosts() const;
 
   private:
-    /// Add K_ij @p x_g to the owned rows i of the column at the ghosted
-    /// position @p g.
+    /// Add K_ij @p x_j to the owned rows i of the owned column @p j (the
+    /// owned prefix of row j, by symmetry).
     void
-    add_column(double *y_values, const unsigned int g, const double x_g) const
+    add_column(double *y_values, const unsigned int j, const double x_j) const
     {
-      for (unsigned int e = column_start[g]; e < column_start[g + 1]; ++e)
-        y_values[row[e]] += value[e] * x_g;
+      const unsigned int *columns = matrix_rows->columns().data();
+      const double       *values  = matrix_rows->values().data();
+      const unsigned int  last    = matrix_rows->row_start()[j + 1];
+      for (unsigned int e = matrix_rows->row_start()[j];
+           e < last && columns[e] < n_owned;
+           ++e)
+        y_values[columns[e]] += values[e] * x_j;
     }
 
-    /// Add K_ij x_j to the owned rows i of the ghost columns j (several
+    /// Add K_ig x_g to the owned rows i of the ghost columns g (several
     /// ranks; nothing on one).
     void
     add_ghost_columns(double *y_values, const LA::MPI::Vector &x);
 
-    /// For each position in the ghosted layout, its entries in the owned
-    /// rows: (row, value), in CSR over the ghosted positions.
-    std::vector<unsigned int> column_start;
-    std::vector<unsigned int> row;
-    std::vector<double>       value;
-    /// The owned position of each owned entry of the ghosted layout, and
-    /// the ghosted positions of the ghosts.
-    std::vector<unsigned int> ghosted_of_owned;
-    std::vector<unsigned int> ghost_positions;
-    bool                      serial_layout = true;
-    /// x in the ghosted layout, and the import into it (several ranks).
-    LA::MPI::Vector                x_ghosted;
-    std::unique_ptr<Epetra_Import> importer;
+    const OwnedRows *matrix_rows   = nullptr;
+    unsigned int     n_owned       = 0;
+    bool             serial_layout = true;
+    /// The owned rows of each ghost column: (row, K_ig), in CSR over the
+    /// halo's ghost entries.
+    std::vector<unsigned int> ghost_start;
+    std::vector<unsigned int> ghost_row;
+    std::vector<double>       ghost_value;
+    /// x's ghost entries, and the exchange's send buffer and requests.
+    std::vector<double>      ghost_x;
+    std::vector<double>      send_buffer;
+    std::vector<MPI_Request> requests;
   };
 } // namespace VPContact
 
