@@ -35,6 +35,21 @@ namespace VPContact
       return s;
     }
 
+    // How often every one of @p subdivisions can be halved: the L of
+    // Geometry::base_level().
+    unsigned int
+    common_halvings(const std::vector<unsigned int> &subdivisions)
+    {
+      unsigned int levels = 0;
+      while (std::all_of(subdivisions.begin(),
+                         subdivisions.end(),
+                         [levels](const unsigned int n) {
+                           return n > 0 && n % (2u << levels) == 0;
+                         }))
+        ++levels;
+      return levels;
+    }
+
     // The position of @p p, in the box [lower, upper], on a Z-order
     // (Morton) curve: the bits of its coordinates, scaled to 21-bit
     // integers, interleaved. Points close on the curve are close in space.
@@ -232,7 +247,7 @@ namespace VPContact
   Geometry<dim>::create_mesh(parallel::TriangulationBase<dim> &triangulation)
   {
     create_coarse_mesh(triangulation);
-    triangulation.refine_global(n_global_refinements);
+    triangulation.refine_global(base_level() + n_global_refinements);
   }
 
 
@@ -262,11 +277,17 @@ namespace VPContact
         if (simplex)
           create_simplex_box(triangulation);
         else
-          GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                    subdivisions,
-                                                    lower_corner,
-                                                    upper_corner,
-                                                    true);
+          {
+            // The box of Subdivisions, base_level() levels coarser.
+            std::vector<unsigned int> coarse(subdivisions);
+            for (unsigned int &n : coarse)
+              n >>= base_level();
+            GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                      coarse,
+                                                      lower_corner,
+                                                      upper_corner,
+                                                      true);
+          }
       }
     else
       {
@@ -475,6 +496,37 @@ namespace VPContact
   Geometry<dim>::global_refinements() const
   {
     return n_global_refinements;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Geometry<dim>::base_level() const
+  {
+    return shape == Shape::box && !simplex ? common_halvings(subdivisions) : 0;
+  }
+
+
+
+  template <int dim>
+  std::uint64_t
+  Geometry<dim>::box_cell_index(const Point<dim> &p) const
+  {
+    if (base_level() == 0)
+      return 0;
+    std::uint64_t index = 0;
+    for (unsigned int d = dim; d-- > 0;)
+      {
+        const double relative
+          = (p[d] - lower_corner[d]) / (upper_corner[d] - lower_corner[d]);
+        const auto i = static_cast<std::uint64_t>(
+          std::clamp(std::floor(relative * subdivisions[d]),
+                     0.,
+                     subdivisions[d] - 1.));
+        index = index * subdivisions[d] + i;
+      }
+    return index;
   }
 
 

@@ -28,9 +28,10 @@ namespace VPContact
   void
   ConvergenceStudy<dim>::parse_parameters(ParameterHandler         &prm,
                                           const std::string        &directory,
-                                          const TimeDiscretization &time)
+                                          const TimeDiscretization &time,
+                                          const unsigned int        base_level)
   {
-    mesh_refinement.parse_parameters(prm);
+    mesh_refinement.parse_parameters(prm, base_level);
     reference_solution.parse_parameters(prm, directory);
     reference_solution.check_time_step(time.step_size(), time.end_time());
   }

@@ -57,8 +57,9 @@ namespace VPContact
                         "10",
                         Patterns::Integer(0, 20),
                         "No cell is refined beyond this many levels above "
-                        "the coarse mesh (including Geometry/Global "
-                        "refinements).");
+                        "the coarse mesh (the box of Geometry/Subdivisions, "
+                        "or the mesh file's cells), Geometry/Global "
+                        "refinements included.");
     }
     prm.leave_subsection();
     declare_time_step_entries(prm);
@@ -103,8 +104,10 @@ namespace VPContact
 
   template <int dim>
   void
-  MeshRefinement<dim>::parse_parameters(ParameterHandler &prm)
+  MeshRefinement<dim>::parse_parameters(ParameterHandler  &prm,
+                                        const unsigned int base)
   {
+    base_level = base;
     prm.enter_subsection("Mesh refinement");
     cycles           = prm.get_integer("Number of cycles");
     refinement       = (prm.get("Strategy") == "adaptive" ? Strategy::adaptive :
@@ -277,7 +280,8 @@ namespace VPContact
   {
     if (refinement == Strategy::uniform)
       {
-        AssertThrow(triangulation.n_global_levels() <= maximum_level,
+        AssertThrow(triangulation.n_global_levels()
+                      <= base_level + maximum_level,
                     ExcMessage("Mesh refinement/Maximum level = "
                                + std::to_string(maximum_level)
                                + " is reached: the next uniform cycle would "
@@ -407,9 +411,9 @@ namespace VPContact
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          if (cell->level() >= static_cast<int>(maximum_level))
+          if (cell->level() >= static_cast<int>(base_level + maximum_level))
             cell->clear_refine_flag();
-          if (cell->level() <= static_cast<int>(minimum_level))
+          if (cell->level() <= static_cast<int>(base_level + minimum_level))
             cell->clear_coarsen_flag();
         }
   }

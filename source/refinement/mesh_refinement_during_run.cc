@@ -24,7 +24,8 @@ namespace VPContact
                         "0",
                         Patterns::Integer(0, 20),
                         "Adaptive only: no cell is coarsened to fewer levels "
-                        "than this above the coarse mesh.");
+                        "than this above the coarse mesh (the box of "
+                        "Geometry/Subdivisions, or the mesh file's cells).");
       prm.declare_entry(
         "Maximum cells",
         "0",

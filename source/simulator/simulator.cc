@@ -91,7 +91,8 @@ namespace VPContact
       .parse_parameters(prm, discretization.finite_element().n_components());
     convergence_study.parse_parameters(prm,
                                        output_writer.directory(),
-                                       time_discretization);
+                                       time_discretization,
+                                       geometry.base_level());
     geometry.set_finest_growth(convergence_study.refinement().largest_growth(
                                  geometry.global_refinements()),
                                convergence_study.refinement().size_entries());

@@ -1,4 +1,5 @@
 // The simulator's mesh and its degrees of freedom, numbered by blocks.
+#include <vpcontact/fe/dof_order.h>
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/problem_data/rigid_motions.h>
@@ -60,6 +61,15 @@ namespace VPContact
     if (discretization.finite_element().n_components() > dim)
       block_component[dim] = 1;
     DoFRenumbering::component_wise(dof_handler, block_component);
+    // On the forest of a box, in the order of the box's rows rather than of
+    // the forest's Morton curve (see Geometry::box_cell_index()).
+    if (geometry.base_level() > 0)
+      renumber_in_cell_order<dim>(
+        dof_handler,
+        block_component,
+        [this](const typename DoFHandler<dim>::active_cell_iterator &cell) {
+          return geometry.box_cell_index(cell->center());
+        });
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
   }

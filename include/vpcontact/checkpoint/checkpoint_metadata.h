@@ -21,7 +21,9 @@ namespace VPContact
   struct CheckpointMetadata
   {
     /// The version of this layout; a checkpoint of another one is refused.
-    static constexpr unsigned int format_version = 2;
+    /// Version 3: the mesh of a box is stored as the forest of its coarsest
+    /// box (Geometry::base_level()).
+    static constexpr unsigned int format_version = 3;
 
     /// The last completed time step and its time t_step.
     unsigned int step = 0;

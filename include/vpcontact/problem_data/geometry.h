@@ -10,6 +10,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/distributed/tria_base.h>
 
+#include <cstdint>
 #include <memory>
 #include <set>
 #include <string>
@@ -78,6 +79,39 @@ namespace VPContact
     /// Geometry/Global refinements.
     unsigned int
     global_refinements() const;
+
+    /**
+     * The level that the cells of the box of Geometry/Subdivisions have in
+     * the mesh: the coarse mesh of a box of quadrilaterals (hexahedra) is
+     * the box divided by the largest power of two 2^L that divides every
+     * subdivision, and create_mesh() refines it L times more than Global
+     * refinements say. Every rank holds the whole coarse mesh, each coarse
+     * cell a tree of p4est's forest; a 512 x 512 box as 262,144 trees takes
+     * more memory and set-up time than the one tree refined 9 times, which
+     * also orders the cells along one space-filling curve, so that the
+     * ranks' parts are compact. Levels the user gives (Mesh
+     * refinement/Maximum level, Minimum level) count from the box of
+     * Subdivisions; MeshRefinement adds this level. 0 for a mesh file or a
+     * box of simplices.
+     */
+    unsigned int
+    base_level() const;
+
+    /**
+     * The index, in the order of rows (x fastest, then y, then z), of the
+     * cell of the box of Geometry/Subdivisions that holds @p p; 0 where
+     * base_level() is 0.
+     *
+     * Why: the cells of the one forest follow a Morton curve, and with them
+     * the degrees of freedom as DoFTools numbers them. The AMG and the
+     * damage's incomplete factorizations depend on that order, and ran
+     * slower in it than in the order of the box's rows, which the forest of
+     * one tree per cell of Subdivisions gave. The simulator numbers the
+     * degrees of freedom in the rows' order (by this index, then the
+     * cells' order within) with renumber_in_cell_order().
+     */
+    std::uint64_t
+    box_cell_index(const Point<dim> &p) const;
 
     /**
      * The largest number of cells of a mesh of the run (later refinement

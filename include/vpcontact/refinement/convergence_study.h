@@ -37,11 +37,13 @@ namespace VPContact
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /// @p output_directory is the run's (a reference is written there).
+    /// @p output_directory is the run's (a reference is written there);
+    /// @p base_level: see MeshRefinement::parse_parameters().
     void
     parse_parameters(ParameterHandler         &prm,
                      const std::string        &output_directory,
-                     const TimeDiscretization &time);
+                     const TimeDiscretization &time,
+                     const unsigned int        base_level);
 
     const MeshRefinement<dim> &
     refinement() const;

@@ -45,8 +45,11 @@ namespace VPContact
     /// shares with adaptive cycles (mesh_refinement_during_run.cc).
     static void
     declare_run_entries(ParameterHandler &prm);
+    /// @p base_level: the level of the cells of Geometry's coarse mesh as
+    /// the user defines it (Geometry::base_level()), from which Maximum
+    /// level and Minimum level count.
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const unsigned int base_level);
 
     unsigned int
     n_cycles() const;
@@ -179,13 +182,15 @@ namespace VPContact
       const parallel::TriangulationBase<dim> &triangulation,
       const std::string                      &what) const;
 
-    unsigned int cycles             = 1;
-    Strategy     refinement         = Strategy::uniform;
-    bool         fixed_fraction     = true;
-    double       refine_fraction    = 0.3;
-    double       coarsen_fraction   = 0.;
-    unsigned int maximum_level      = 10;
-    unsigned int minimum_level      = 0;
+    unsigned int cycles           = 1;
+    Strategy     refinement       = Strategy::uniform;
+    bool         fixed_fraction   = true;
+    double       refine_fraction  = 0.3;
+    double       coarsen_fraction = 0.;
+    unsigned int maximum_level    = 10;
+    unsigned int minimum_level    = 0;
+    /// See parse_parameters().
+    unsigned int base_level         = 0;
     unsigned int maximum_cells      = 0;
     bool         during_run         = false;
     unsigned int every_steps        = 10;
