@@ -315,6 +315,43 @@ def peer_run(a, size, solver, ranks, tag):
     return row
 
 
+def start_memory(a, head, peer_runs):
+    """The peak memory of a run on 4 x 4 cells, 2 steps (vpcontact: HEAD,
+    Trilinos, CG with AMG; the peer: CG with GAMG), 1 rank: what a run
+    holds whatever its mesh, mostly the libraries it loads. Stored in
+    every row (MACHINE); '' where a run failed or the peer is skipped."""
+    folder = os.path.join(a.workdir, "runs", "start")
+    shutil.rmtree(folder, ignore_errors=True)
+    prm = os.path.join(a.workdir, "start.prm")
+    with open(prm, "w") as f:
+        f.write(open(head.scene).read())
+        f.write("\nsubsection Geometry\n  set Subdivisions = 4, 4\nend\n"
+                "subsection Time\n  set End time = 0.02\n"
+                "  set Time step = 0.01\nend\n"
+                f"subsection Output\n  set Directory = {folder}\nend\n"
+                "subsection Solver\n  set Linear solver = CG with AMG\n"
+                + ("  set Linear algebra = Trilinos\n"
+                   if "Solver/Linear algebra" in head.has else "")
+                + "end\n")
+    _, mine = launch(a, [head.executable, prm], 1, "start_vpcontact",
+                     lambda out: "Total wallclock" in out)
+    shutil.rmtree(folder, ignore_errors=True)
+    theirs = {}
+    if peer_runs:
+        summary = os.path.join(a.workdir, "runs", "start_peer.json")
+        _, theirs = launch(
+            a, [PYTHON, os.path.abspath(a.peer), "--n", "4", "--steps", "2",
+                "--solver", "gamg", "--out",
+                os.path.splitext(summary)[0] + ".csv", "--quiet"],
+            1, "start_peer", lambda out: os.path.exists(summary))
+        for f in glob.glob(os.path.splitext(summary)[0] + ".*"):
+            os.remove(f)
+    return {"start_mem_vpcontact_mb": mine["mem_all_mb"]
+            if mine["status"] == "ok" else "",
+            "start_mem_peer_mb": theirs.get("mem_all_mb", "")
+            if theirs.get("status") == "ok" else ""}
+
+
 def machine():
     """Where and on what the benchmark runs, stored in every CSV row."""
     cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo")
@@ -512,6 +549,8 @@ def main():
                 subprocess.run([PYTHON, a.peer, "--n", "4", "--steps", "2",
                                 "--solver", solver, "--quiet"], env=ENV,
                                capture_output=True)
+        info.update(start_memory(
+            a, head, any(r[1] == "peer" and not r[6] for r in runs)))
         rows = benchmark(a, info, runs)
     bench_report.write_csv(a.csv, rows)  # also where every run was skipped
     bench_report.write_report(a.out, a.csv, rows)

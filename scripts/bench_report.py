@@ -26,7 +26,8 @@ PHASE_TITLES = [("assembly", "assembly"),
 # head: the tree the benchmark ran from, the same in every row; scene: a
 # hash of the scene file that commit's binary read.
 MACHINE = ["date", "cpu", "cores", "memory_gb", "os", "dealii", "petsc",
-           "dolfinx", "commit", "head", "scene", "thp"]
+           "dolfinx", "commit", "head", "scene", "thp",
+           "start_mem_vpcontact_mb", "start_mem_peer_mb"]
 COLUMNS = (["round", "size", "steps", "code", "algebra", "solver", "path",
             "ranks", "status", "dofs", "total_s", "setup_s", "per_step_ms"]
            + [p + "_ms" for p in PHASES]
