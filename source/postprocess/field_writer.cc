@@ -72,15 +72,36 @@ namespace VPContact
                      const bool         in_background)
   {
     Assert(!pending(), ExcMessage("wait() for the previous write first"));
+    // A write at once holds up the steps, and there the kept sections of
+    // the mesh save their compression. A write in the background runs on
+    // a core the steps leave idle: the sections would only hold memory
+    // there.
+    const bool          keep_sections = !in_background;
+    const std::uint64_t fingerprint
+      = keep_sections ? fields.piece.mesh_fingerprint() : 0;
+    if (!keep_sections)
+      mesh_sections.reset();
+    else if (mesh_sections != nullptr && fingerprint == mesh_fingerprint)
+      fields.piece.reuse_mesh_sections(mesh_sections);
     // The task owns the piece. It holds the piece through a shared pointer, so
     // that no copy of the task copies it, and frees it itself. It returns
     // what went wrong, or an empty string.
     auto write_piece
-      = [fields = std::make_shared<FieldPiece>(std::move(fields)),
-         filename]() mutable -> std::string {
+      = [this,
+         fields = std::make_shared<FieldPiece>(std::move(fields)),
+         filename,
+         keep_sections,
+         fingerprint]() mutable -> std::string {
       std::string problem;
       try
         {
+          if (keep_sections && !fields->piece.has_mesh_sections())
+            {
+              // A new mesh: its sections, for this piece and the next
+              // (the task runs at once here, in the caller's thread).
+              mesh_sections    = fields->piece.take_mesh_sections();
+              mesh_fingerprint = fingerprint;
+            }
           write_piece_file(*fields, filename);
         }
       catch (const ExceptionBase &e)

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <sstream>
 #include <zlib.h>
 
 namespace VPContact
@@ -16,12 +18,11 @@ namespace VPContact
   {
     // Base64, as VTK's XML readers decode binary data arrays.
     void
-    write_base64(std::ostream &out, const unsigned char *data, std::size_t n)
+    append_base64(std::string &text, const unsigned char *data, std::size_t n)
     {
       static const char table[]
         = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-      std::string text;
-      text.reserve(4 * ((n + 2) / 3));
+      text.reserve(text.size() + 4 * ((n + 2) / 3));
       for (std::size_t i = 0; i < n; i += 3)
         {
           const std::uint32_t b
@@ -33,7 +34,6 @@ namespace VPContact
           text += i + 1 < n ? table[(b >> 6) & 63] : '=';
           text += i + 2 < n ? table[b & 63] : '=';
         }
-      out << text;
     }
 
 
@@ -87,20 +87,20 @@ namespace VPContact
 
 
     // One data array in VTK's compressed binary form, as deal.II's
-    // write_vtu() gives it: the header (number of blocks, block size, size
-    // of the last block, compressed size of each block, as UInt32) and the
-    // compressed bytes, each encoded on its own. An empty array has no
-    // text (VTK reads no values for it). The geometry and the cells are
-    // deflated with the full search (their values repeat in patterns); a
-    // field (@p is_field) as field_strategy() finds.
+    // write_vtu() gives it, appended to @p text: the header (number of
+    // blocks, block size, size of the last block, compressed size of each
+    // block, as UInt32) and the compressed bytes, each encoded on its own.
+    // An empty array has no text (VTK reads no values for it). The geometry
+    // and the cells are deflated with the full search (their values repeat
+    // in patterns); a field (@p is_field) as field_strategy() finds.
     template <typename T>
     void
-    write_array(std::ostream         &out,
-                const std::string    &attributes,
-                const std::vector<T> &values,
-                const bool            is_field = false)
+    append_array(std::string          &text,
+                 const std::string    &attributes,
+                 const std::vector<T> &values,
+                 const bool            is_field = false)
     {
-      out << "    <DataArray " << attributes << " format=\"binary\">\n";
+      text += "    <DataArray " + attributes + " format=\"binary\">\n";
       if (!values.empty())
         {
           const auto *bytes = reinterpret_cast<const Bytef *>(values.data());
@@ -120,13 +120,56 @@ namespace VPContact
                static_cast<std::uint32_t>(size),
                static_cast<std::uint32_t>(size),
                static_cast<std::uint32_t>(compressed.size())};
-          write_base64(out,
-                       reinterpret_cast<const unsigned char *>(header),
-                       sizeof(header));
-          write_base64(out, compressed.data(), compressed.size());
-          out << '\n';
+          // Room for all that follows at once: a text that grows by
+          // doubling would take twice the array's text for a moment.
+          text.reserve(text.size() + 4 * ((sizeof(header) + 2) / 3)
+                       + 4 * ((compressed.size() + 2) / 3) + 32);
+          append_base64(text,
+                        reinterpret_cast<const unsigned char *>(header),
+                        sizeof(header));
+          append_base64(text, compressed.data(), compressed.size());
+          text += '\n';
         }
-      out << "    </DataArray>\n";
+      text += "    </DataArray>\n";
+    }
+
+
+
+    // The array, and its memory given back once it is in @p text.
+    template <typename T>
+    void
+    move_array(std::string       &text,
+               const std::string &attributes,
+               std::vector<T>    &values)
+    {
+      append_array(text, attributes, values);
+      std::vector<T>().swap(values);
+    }
+
+
+
+    // The <Points> and <Cells> sections of a piece: the tags to @p emit,
+    // each array to @p add (appended to a text, or written at once).
+    template <typename Emit,
+              typename Add,
+              typename Points,
+              typename Indices,
+              typename Types>
+    void
+    points_and_cells(const Emit &emit,
+                     const Add  &add,
+                     Points     &points,
+                     Indices    &connectivity,
+                     Indices    &offsets,
+                     Types      &types)
+    {
+      emit("  <Points>\n");
+      add("type=\"Float32\" NumberOfComponents=\"3\"", points);
+      emit("  </Points>\n  <Cells>\n");
+      add("type=\"Int32\" Name=\"connectivity\"", connectivity);
+      add("type=\"Int32\" Name=\"offsets\"", offsets);
+      add("type=\"UInt8\" Name=\"types\"", types);
+      emit("  </Cells>\n");
     }
 
 
@@ -135,14 +178,18 @@ namespace VPContact
     write_fields(std::ostream &out, const std::vector<VtuPiece::Field> &fields)
     {
       for (const auto &field : fields)
-        write_array(out,
-                    "type=\"Float32\" Name=\"" + field.name + "\""
-                      + (field.n_components > 1 ?
-                           " NumberOfComponents=\""
-                             + std::to_string(field.n_components) + "\"" :
-                           std::string()),
-                    field.values,
-                    true);
+        {
+          std::string text;
+          append_array(text,
+                       "type=\"Float32\" Name=\"" + field.name + "\""
+                         + (field.n_components > 1 ?
+                              " NumberOfComponents=\""
+                                + std::to_string(field.n_components) + "\"" :
+                              std::string()),
+                       field.values,
+                       true);
+          out << text;
+        }
     }
   } // namespace
 
@@ -151,7 +198,7 @@ namespace VPContact
   std::size_t
   VtuPiece::n_points() const
   {
-    return points.size() / 3;
+    return sections_of_mesh ? n_points_of_mesh : points.size() / 3;
   }
 
 
@@ -159,7 +206,95 @@ namespace VPContact
   std::size_t
   VtuPiece::n_cells() const
   {
-    return types.size();
+    return sections_of_mesh ? n_cells_of_mesh : types.size();
+  }
+
+
+
+  std::uint64_t
+  VtuPiece::mesh_fingerprint() const
+  {
+    // FNV-1a over 64-bit words (the bytes of each array, its size first):
+    // a few milliseconds for the millions of points of a large piece.
+    std::uint64_t hash = 14695981039346656037ull;
+    const auto    add  = [&hash](const std::uint64_t word) {
+      hash = (hash ^ word) * 1099511628211ull;
+    };
+    const auto add_array = [&add](const void *data, const std::size_t size) {
+      add(size);
+      const auto *bytes = static_cast<const unsigned char *>(data);
+      std::size_t i     = 0;
+      for (; i + 8 <= size; i += 8)
+        {
+          std::uint64_t word;
+          std::memcpy(&word, bytes + i, 8);
+          add(word);
+        }
+      for (; i < size; ++i)
+        add(bytes[i]);
+    };
+    add_array(points.data(), points.size() * sizeof(float));
+    add_array(connectivity.data(), connectivity.size() * sizeof(std::int32_t));
+    add_array(offsets.data(), offsets.size() * sizeof(std::int32_t));
+    add_array(types.data(), types.size());
+    return hash;
+  }
+
+
+
+  std::string
+  VtuPiece::mesh_sections() const
+  {
+    std::string text;
+    points_and_cells([&text](const char *tags) { text += tags; },
+                     [&text](const std::string &attributes,
+                             const auto        &values) {
+                       append_array(text, attributes, values);
+                     },
+                     points,
+                     connectivity,
+                     offsets,
+                     types);
+    return text;
+  }
+
+
+
+  std::shared_ptr<const std::string>
+  VtuPiece::take_mesh_sections()
+  {
+    // Each array is freed as soon as it is in the text, so that the
+    // sections take hardly more memory to make than they free.
+    const std::size_t n_points_here = n_points(), n_cells_here = n_cells();
+    std::string       text;
+    points_and_cells([&text](const char *tags) { text += tags; },
+                     [&text](const std::string &attributes, auto &values) {
+                       move_array(text, attributes, values);
+                     },
+                     points,
+                     connectivity,
+                     offsets,
+                     types);
+    text.shrink_to_fit();
+    auto sections    = std::make_shared<const std::string>(std::move(text));
+    sections_of_mesh = sections;
+    n_points_of_mesh = n_points_here;
+    n_cells_of_mesh  = n_cells_here;
+    return sections;
+  }
+
+
+
+  void
+  VtuPiece::reuse_mesh_sections(std::shared_ptr<const std::string> sections)
+  {
+    n_points_of_mesh = n_points();
+    n_cells_of_mesh  = n_cells();
+    sections_of_mesh = std::move(sections);
+    std::vector<float>().swap(points);
+    std::vector<std::int32_t>().swap(connectivity);
+    std::vector<std::int32_t>().swap(offsets);
+    std::vector<std::uint8_t>().swap(types);
   }
 
 
@@ -174,14 +309,24 @@ namespace VPContact
            "byte_order=\"LittleEndian\">\n"
         << "<UnstructuredGrid>\n"
         << "<Piece NumberOfPoints=\"" << n_points() << "\" NumberOfCells=\""
-        << n_cells() << "\">\n"
-        << "  <Points>\n";
-    write_array(out, "type=\"Float32\" NumberOfComponents=\"3\"", points);
-    out << "  </Points>\n  <Cells>\n";
-    write_array(out, "type=\"Int32\" Name=\"connectivity\"", connectivity);
-    write_array(out, "type=\"Int32\" Name=\"offsets\"", offsets);
-    write_array(out, "type=\"UInt8\" Name=\"types\"", types);
-    out << "  </Cells>\n  <PointData>\n";
+        << n_cells() << "\">\n";
+    // Without kept sections, array by array, so that only one array's
+    // text exists at a time.
+    if (sections_of_mesh)
+      out << *sections_of_mesh;
+    else
+      points_and_cells([&out](const char *tags) { out << tags; },
+                       [&out](const std::string &attributes,
+                              const auto        &values) {
+                         std::string text;
+                         append_array(text, attributes, values);
+                         out << text;
+                       },
+                       points,
+                       connectivity,
+                       offsets,
+                       types);
+    out << "  <PointData>\n";
     write_fields(out, point_fields);
     out << "  </PointData>\n  <CellData>\n";
     write_fields(out, cell_fields);

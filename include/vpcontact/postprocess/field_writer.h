@@ -8,7 +8,9 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/numerics/data_component_interpretation.h>
 
+#include <cstdint>
 #include <future>
+#include <memory>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -58,6 +60,13 @@ namespace VPContact
    * One write at a time: start() waits for the previous one. A failure in
    * the background is reported by wait(), not thrown there, so that the
    * caller can tell every MPI rank.
+   *
+   * The points and cells of a piece are the same at every output until
+   * the mesh changes. Where it writes at once, holding up the steps, the
+   * writer keeps them compressed and encoded (VtuPiece::mesh_sections())
+   * with their fingerprint, and a piece of the same fingerprint is written
+   * with them, its own points and cells freed at start(). In the
+   * background it compresses every piece whole and keeps nothing.
    */
   class FieldWriter
   {
@@ -88,6 +97,10 @@ namespace VPContact
 
   private:
     std::future<std::string> write;
+    /// The mesh sections of the last piece written at once, and their
+    /// fingerprint.
+    std::shared_ptr<const std::string> mesh_sections;
+    std::uint64_t                      mesh_fingerprint = 0;
     /// Whether a write was started and not yet waited for, and what went
     /// wrong with a write done at once.
     bool        started = false;

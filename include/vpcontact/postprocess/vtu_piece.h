@@ -5,6 +5,7 @@
 #define vpcontact_vtu_piece_h
 
 #include <cstdint>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -49,6 +50,37 @@ namespace VPContact
     std::size_t
     n_cells() const;
 
+    /// A 64-bit hash of the points and the cells, which tells whether the
+    /// mesh_sections() of another piece can stand for this one's.
+    std::uint64_t
+    mesh_fingerprint() const;
+
+    /// The <Points> and <Cells> sections of the piece, compressed and
+    /// encoded as write() writes them.
+    std::string
+    mesh_sections() const;
+
+    /// The same, kept by this piece for write(), its points and cells
+    /// freed one array after the other as they are compressed.
+    std::shared_ptr<const std::string>
+    take_mesh_sections();
+
+    /**
+     * Write @p sections, the mesh_sections() of a piece of the same points
+     * and cells, instead of compressing the points and cells again, and
+     * free them here: on a mesh that stays, every field output has the
+     * same sections (FieldWriter keeps them).
+     */
+    void
+    reuse_mesh_sections(std::shared_ptr<const std::string> sections);
+
+    /// Whether reuse_mesh_sections() gave the sections.
+    bool
+    has_mesh_sections() const
+    {
+      return sections_of_mesh != nullptr;
+    }
+
     /**
      * Write the piece to @p out as a whole .vtu file: every array in
      * binary form, compressed by zlib at its fastest level (the level
@@ -60,6 +92,11 @@ namespace VPContact
      */
     void
     write(std::ostream &out) const;
+
+  private:
+    std::shared_ptr<const std::string> sections_of_mesh;
+    std::size_t                        n_points_of_mesh = 0;
+    std::size_t                        n_cells_of_mesh  = 0;
   };
 
   /// @p pvtu, a record written by deal.II's write_pvtu_record(), with a
