@@ -214,11 +214,15 @@ namespace VPContact
   std::uint64_t
   VtuPiece::mesh_fingerprint() const
   {
-    // FNV-1a over 64-bit words (the bytes of each array, its size first):
-    // a few milliseconds for the millions of points of a large piece.
+    // FNV-1a's step over 64-bit words (the bytes of each array, its size
+    // first), each product folded by a shift: a product carries a bit only
+    // upwards, so that without the fold two changes in the high bits of
+    // the words could cancel. A few milliseconds for the millions of
+    // points of a large piece.
     std::uint64_t hash = 14695981039346656037ull;
     const auto    add  = [&hash](const std::uint64_t word) {
       hash = (hash ^ word) * 1099511628211ull;
+      hash ^= hash >> 29;
     };
     const auto add_array = [&add](const void *data, const std::size_t size) {
       add(size);

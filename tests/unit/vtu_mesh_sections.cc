@@ -1,11 +1,12 @@
 // Unit test: FieldWriter keeps the compressed points and cells of a piece
-// written at once (VtuPiece::mesh_sections()) and writes the next piece of
-// the same mesh with them. A piece written with the sections of another piece of its mesh is the
-// same file as written alone, and frees its own points and cells; a piece of
-// another mesh has another fingerprint. Then three outputs of two fields on
-// one mesh of two quadrilaterals and one on a mesh whose cells differ in one
-// vertex, through a FieldWriter in the background and at once: every file is
-// byte for byte the file VtuPiece::write() gives its piece alone.
+// written at once (VtuPiece::mesh_sections()) and writes the next piece of the
+// same mesh with them. A piece written with the sections of another piece of
+// its mesh is the same file as written alone, and frees its own points and
+// cells; a piece of another mesh, or with two coordinates of another sign, has
+// another fingerprint. Then three outputs of two fields on one mesh of two
+// quadrilaterals and one on a mesh whose cells differ in one vertex, through a
+// FieldWriter in the background and at once: every file is byte for byte the
+// file VtuPiece::write() gives its piece alone.
 #include <vpcontact/postprocess/field_writer.h>
 
 #include <deal.II/base/mpi.h>
@@ -88,6 +89,18 @@ namespace
               << "; other mesh, other fingerprint: "
               << (other.piece.mesh_fingerprint()
                       != next.piece.mesh_fingerprint() ?
+                    "yes" :
+                    "no")
+              << std::endl;
+    // Two changes in the highest bit of a 64-bit word (the signs of the
+    // second float of the first two words), which a plain FNV-1a step over
+    // words would let cancel.
+    FieldPiece signs = piece_of_step(0, false);
+    signs.piece.points[1] *= -1.f;
+    signs.piece.points[3] *= -1.f;
+    std::cout << "two signs flipped, other fingerprint: "
+              << (signs.piece.mesh_fingerprint()
+                      != first.piece.mesh_fingerprint() ?
                     "yes" :
                     "no")
               << std::endl;
