@@ -66,6 +66,12 @@ def arguments():
                    "(the heap in transparent huge pages) right after each "
                    "configuration, or each whose name matches REGEX; the "
                    "report compares it like an --against commit")
+    p.add_argument("--one-thread", nargs="?", const="1 rank", metavar="REGEX",
+                   help="also run HEAD's build with DEAL_II_NUM_THREADS=1 "
+                   "right after each configuration on 1 rank, or each whose "
+                   "name matches REGEX: what 2 ranks gain over 1 by the "
+                   "ranks alone; the report compares it like an --against "
+                   "commit")
     p.add_argument("--configs", metavar="REGEX", help="only the runs whose "
                    "name matches (re.search), as in 'vpcontact Trilinos "
                    "Cholesky, 1 rank' or 'peer gamg, 2 ranks': "
@@ -469,6 +475,21 @@ def huge_pages(a, head):
     return [program]
 
 
+def one_thread(a, head):
+    """With --one-thread: HEAD's build once more on one thread per rank
+    (DEAL_II_NUM_THREADS=1), labelled as a commit of its own. A run on 1
+    rank otherwise uses deal.II's threads on every core, so that its
+    figures against 2 ranks mix the threads' gain with the ranks'."""
+    if not a.one_thread:
+        return []
+    program = bench_against.Program(head.commit + bench_report.ONE_THREAD,
+                                    head.executable, ROOT)
+    program.has = head.has
+    program.configs = a.one_thread
+    program.environment = ("DEAL_II_NUM_THREADS=1",)
+    return [program]
+
+
 def earlier_programs(a, worktrees, head_commit):
     """A build of each --against commit with the entries it offers."""
     programs = []
@@ -533,7 +554,7 @@ def main():
         sys.exit(f"{a.executable} --print-parameters printed no entries")
     plan(a, [head])  # a --configs that selects nothing stops before a build
     with bench_against.Worktrees(a.workdir) as worktrees:
-        runs = plan(a, [head] + huge_pages(a, head)
+        runs = plan(a, [head] + huge_pages(a, head) + one_thread(a, head)
                     + earlier_programs(a, worktrees, head.commit))
         for program, code, algebra, solver, _, ranks, skip in runs:
             if skip:

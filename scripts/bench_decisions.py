@@ -62,7 +62,8 @@ def table(every):
         if s != size or r["code"] != "vpcontact" or not report.is_head(r):
             continue
         for (s2, k2), old in every.items():
-            if s2 != size or k2[:4] != k[:4] or report.is_head(old):
+            if (s2 != size or k2[:4] != k[:4] or report.is_head(old)
+                    or report.head_setting(old)):
                 continue
             run = number(r.get("per_step_ms")) or 1.
             run_then = number(old.get("per_step_ms")) or 1.

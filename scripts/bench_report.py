@@ -54,6 +54,15 @@ def huge_page_line(m):
             "the system gives them."]
 
 
+def settings_of_head(rows):
+    """The words of the machine section for HEAD's other settings."""
+    words = [text for label, text in (
+        (HUGE_PAGES, "with its heap in huge pages"),
+        (ONE_THREAD, "with one thread on 1 rank")) if any(
+            r["commit"].endswith(label) for r in rows)]
+    return f" (also {' and '.join(words)})" if words else ""
+
+
 def untimed_in_other(r):
     """A row of vpcontact with *other* = the part of its time per step that
     no other column holds: timer names the grouping does not know and the
@@ -112,10 +121,16 @@ def is_head(r):
     return r["commit"] == head(r)
 
 
-def page_setting(r):
-    """Whether the row is HEAD's build run with its heap in huge pages
-    (bench.py --huge-pages): a setting of HEAD, not an earlier commit."""
-    return r["commit"].endswith(" huge pages")
+# The labels bench.py gives HEAD's build run in another setting: its heap
+# in huge pages (--huge-pages), one thread per rank (--one-thread).
+HUGE_PAGES = " huge pages"
+ONE_THREAD = " one thread"
+
+
+def head_setting(r):
+    """Whether the row is HEAD's build run in another setting (bench.py
+    --huge-pages or --one-thread), not an earlier commit."""
+    return r["commit"].endswith((HUGE_PAGES, ONE_THREAD))
 
 
 def short(r):
@@ -527,11 +542,10 @@ def write_report(out, csv_path, rows):
         f"* {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB, {m['os']}; "
         f"deal.II {m['dealii']}, PETSc {m['petsc'] or '–'}, DOLFINx "
         f"{m['dolfinx'] or '–'}; vpcontact at commit {head(m)}"
-        + (" (also with its heap in huge pages)"
-           if any(page_setting(r) for r in rows) else "")
+        + settings_of_head(rows)
         + "".join(f" and at {c}" for c in sorted(
             {r["commit"] for r in rows
-             if not is_head(r) and not page_setting(r)}))
+             if not is_head(r) and not head_setting(r)}))
         + f"; measured {m['date']}.",
         f"* Scene: `prm/paper_fig1.prm` (Tresca friction, gradient damage, "
         f"the paper's law) on N x N cells, {steps} steps over T = 1; "
@@ -631,7 +645,10 @@ def write_report(out, csv_path, rows):
         "*Phases against earlier commits*; the worktree is removed at the "
         "end), `--huge-pages [REGEX]` (HEAD's build again with "
         "`VPCONTACT_HUGE_PAGES=1`, its heap in transparent huge pages, "
-        "compared in the same section). `scripts/bench_report.py CSV PAGE` "
+        "compared in the same section), `--one-thread [REGEX]` (HEAD's "
+        "build again on 1 rank with `DEAL_II_NUM_THREADS=1`, compared in "
+        "the same section and in the speed-up goals). "
+        "`scripts/bench_report.py CSV PAGE` "
         "rewrites the page from the CSV alone. Run it with nothing else "
         "busy on the machine."]
     with open(out, "w") as f:
