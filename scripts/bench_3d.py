@@ -25,7 +25,6 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import bench  # noqa: E402  (next to this file)
-import bench_report  # noqa: E402
 
 # Each scene's file and its default cells per side: the slip scene has no
 # damage, so 72^3 cells give it over a million unknowns (3 * 73^3), as the

@@ -374,164 +374,12 @@ def against_section(every):
     return lines
 
 
-def steps_text(steps):
-    return f"{steps} step" + ("" if str(steps) == "1" else "s")
-
-
-def other_sittings(rows, m):
-    """A sentence for each scene whose first row was measured in another
-    sitting than the first row of all (bench_3d --scenes replaces only the
-    scenes it runs), so that the header does not claim those rows."""
-    text = ""
-    for scene in dict.fromkeys(r.get("scene") or "paper" for r in rows):
-        f = next(r for r in rows if (r.get("scene") or "paper") == scene)
-        if (f["date"], f["cpu"], f["steps"]) != (m["date"], m["cpu"],
-                                                 m["steps"]):
-            text += (f" The *{scene}* rows: {steps_text(f['steps'])}, "
-                     "measured at "
-                     f"commit {f['commit']} on {f['date']} ({f['cpu']}).")
-    return text
-
-
-def scene_3d(csv_path):
-    """The section of the 3D paper scene from bench_3d.csv beside the
-    CSV of the 2D runs (scripts/bench_3d), if there is one."""
-    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)),
-                        "bench_3d.csv")
-    if not os.path.exists(path):
-        return []
-    rows = [r for r in read_csv(path) if r["status"] == "ok"
-            or r["status"].startswith("stopped after")]
-    if not rows:
-        return []
-    m = rows[0]
-    stopped = [r for r in rows if r["status"] != "ok"]
-    # The rows after the first of each scene ran an earlier commit's
-    # executable in the same sitting (--against).
-    firsts = {}
-    for r in rows:
-        firsts.setdefault(r.get("scene") or "paper", id(r))
-    commits = sorted({r["commit"] for r in rows if id(r) not in
-                      firsts.values()} - {m["commit"]})
-    side_by_side = (
-        f" Rows of commit {', '.join(commits)} ran the executable of that "
-        "earlier commit right after this one's (`--against`), for "
-        "comparison on the same machine in the same sitting." if commits
-        else "")
-    lines = [
-        "", "## The 3D scenes", "",
-        "`prm/paper_fig1_3d.prm` (*paper*: the unit cube, Tresca friction "
-        "on z = 0, gradient damage, the paper's law) and "
-        "`prm/paper_fig1_3d_slip.prm` (*slip*: the same without damage and "
-        "with a friction bound low enough for the contact face to slip) on "
-        "N × N × N cells (column *N*), "
-        f"{steps_text(m['steps'])} of k = 0.01 with `CG with AMG` (Trilinos "
-        "ML), no field output, measured by `scripts/bench_3d` at commit "
-        f"{m['commit']} on {m['date']} ({m['cpu']}). Time per step in ms, "
-        "split as above; *AS its*: friction active-set iterations per "
-        "step (one where a node changes set reassembles the matrix and "
-        "rebuilds AMG)." + side_by_side + other_sittings(rows, m), "",
-        "| scene | commit | N | ranks | dofs | total [s] | per step [ms] | " +
-        " | ".join(t for _, t in PHASE_TITLES) +
-        " | CG its per step | AS its per step | memory rank 0 [MB] | "
-        "memory all ranks [MB] |",
-        "|" + "---|" * (11 + len(PHASE_TITLES))]
-    for r in rows:
-        lines.append(
-            f"| {r.get('scene') or 'paper'}"
-            f"{' (stopped)' if r in stopped else ''} | {r['commit']} | "
-            f"{r['cells_per_side']} | "
-            f"{r['ranks']} | {r['dofs']} | "
-            f"{fmt(r['total_s'])} | {fmt(r['per_step_ms'])} | " +
-            " | ".join(fmt(r.get(p + "_ms")) for p, _ in PHASE_TITLES) +
-            f" | {fmt(r['linear_its'])} | {fmt(r['active_set_its'])} | "
-            f"{fmt(r['mem_rank0_mb'])} | {fmt(r['mem_all_mb'])} |")
-    for r in rows:
-        if r["commit"] == m["commit"] or r["status"] != "ok":
-            continue
-        head = next((h for h in rows if h["commit"] == m["commit"]
-                     and h["status"] == "ok" and h["scene"] == r["scene"]
-                     and h["ranks"] == r["ranks"]), None)
-        if head:
-            lines += ["", f"*{r['scene']}, {r['ranks']} ranks, "
-                      f"{m['commit']} against {r['commit']}*: time per step "
-                      f"{fmt(head['per_step_ms'])} / {fmt(r['per_step_ms'])} "
-                      f"ms = {float(head['per_step_ms']) / float(r['per_step_ms']):.3g}, "
-                      f"peak memory over the ranks {fmt(head['mem_all_mb'])} / "
-                      f"{fmt(r['mem_all_mb'])} MB = "
-                      f"{float(head['mem_all_mb']) / float(r['mem_all_mb']):.3g}."]
-    for r in stopped:
-        lines += ["", f"*{r.get('scene')} (stopped)*: {r['status']}; its "
-                  "time per step is the mean wall time of the steps it "
-                  "finished (statistics.csv), without the split by phase."]
-    return lines
-
-
-def setup_scaling(csv_path):
-    """The section of setup time against the mesh size from bench_setup.csv
-    beside the CSV of the 2D runs (scripts/bench_setup), if there is one."""
-    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)),
-                        "bench_setup.csv")
-    if not os.path.exists(path):
-        return []
-    rows = read_csv(path)
-    if not rows:
-        return []
-    m = rows[0]
-    box = {r["cells"]: r for r in rows if r["mesh"] == "box"}
-    lines = [
-        "", "## Setup against the mesh size", "",
-        "The setup of a run (the timer's *Setup*: the distributed mesh, "
-        "degrees of freedom, constraints, sparsity patterns, matrices and "
-        "the damage problem's numbering, mass and preconditioner) from a "
-        "Gmsh file of triangles "
-        "whose nodes and cells come in a random order (the L shape of "
-        "`prm/meshes/make_l_shape.py N triangles shuffled`, 6N² triangles) "
-        "and from a generated simplex box of as many triangles "
-        "(`Subdivisions = 3N, N`), both with gradient damage, one step, on "
-        f"{m['ranks']} rank(s); measured by `scripts/bench_setup` at commit "
-        f"{m['commit']} on {m['date']} ({m['cpu']}). *before the timer*: "
-        "the process's wall time outside the timer's total: loading the "
-        "program's libraries and starting MPI (reading and checking the "
-        "mesh file come after, in the total but not in *Setup*). *ratio*: "
-        "the Gmsh file's setup over the box's. `scripts/bench_setup "
-        "[--sizes N ...]` (default 50 100 200 310) measures it again.", "",
-        "| mesh | cells | dofs | setup [s] | before the timer [s] | "
-        "whole run [s] | memory rank 0 [MB] | ratio |",
-        "|---|---|---|---|---|---|---|---|"]
-    for r in rows:
-        other = box.get(r["cells"]) if r["mesh"] == "gmsh" else None
-        ratio = (fmt(r["setup_s"] / other["setup_s"])
-                 if other and other["setup_s"] else "–")
-        lines.append(
-            f"| {'Gmsh file, shuffled' if r['mesh'] == 'gmsh' else 'box'} | "
-            f"{r['cells']} | {r['dofs']} | {fmt(r['setup_s'])} | "
-            f"{fmt(r['before_timer_s'])} | {fmt(r['process_wall_s'])} | "
-            f"{fmt(r['mem_rank0_mb'])} | {ratio} |")
-    return lines
-
-
-def write_report(out, csv_path, rows):
-    import bench_goals  # noqa: E402  (it imports this module)
-    import adaptive_run_report  # noqa: E402  (next to this file)
-    import bench_solvers_report  # noqa: E402  (next to this file)
-    rows = [untimed_in_other(r) for r in rows]
-    ok = [r for r in rows if r["status"] == "ok"] or rows
-    m = ok[0]
-    # The tables of HEAD against the peer and the goals take HEAD's runs;
-    # the costs and the phases against earlier commits take every commit's.
-    best = medians([r for r in rows if is_head(r)])
-    every = medians(rows, key=lambda r: key(r) + (r["commit"],))
-    earlier = sorted({r["commit"] for r in rows if not is_head(r)})
-    sizes = sorted({int(r["size"]) for r in rows})
+def introduction(m, rows, csv_link):
+    """The page's title, what it measures and the section *Machine and
+    runs*."""
     steps = int(m["steps"])
     rounds = max(int(r["round"]) for r in rows)
-    algebras = [a for a in ("Trilinos", "PETSc")
-                if any(k[1] == a for _, k in best)]
-    minutes = sum(r.get("process_wall_s") or 0 for r in rows) / 60
-    csv_link = os.path.relpath(os.path.abspath(csv_path),
-                               os.path.dirname(os.path.abspath(out)))
-    text = [
+    return [
         "# Performance", "",
         "What the displacement solvers of vpcontact cost on the paper scene "
         "on 1 and 2 MPI ranks, next to an independent DOLFINx implementation "
@@ -582,11 +430,56 @@ def write_report(out, csv_path, rows):
         f"{'s' * (rounds > 1)} by total time." if rounds > 1 else
         "* One round: the machine's speed can drift by tens of per cent "
         "between runs; `--rounds 3` reports medians.", "",
-        "## What each solver costs", "",
-    ] + cost_table(every) + [
-        "", "## Phases against earlier commits", "",
-    ] + against_section(every) + [
-        "", "## Which to pick", "",
+    ]
+
+
+def runs_not_in_tables(rows):
+    """The section that names the runs that failed or were skipped, one
+    line per reason."""
+    reasons = {}
+    for r in rows:
+        if r["status"] != "ok":
+            reasons.setdefault(r["status"], []).append(
+                f"{name(r)} on {r['ranks']} rank{'s' * (int(r['ranks']) > 1)}"
+                + ("" if r["status"].startswith("skipped") else
+                   f" at {r['size']}² (round {r['round']})"))
+    notes = [f"* {'; '.join(runs)}: {status}"
+             for status, runs in reasons.items()]
+    return ["", "## Runs not in the tables", ""] + notes if notes else []
+
+
+def regenerating(rows, csv_link):
+    """The section *Regenerating*: the command and its options."""
+    minutes = sum(r.get("process_wall_s") or 0 for r in rows) / 60
+    return [
+        "", "## Regenerating", "",
+        "`scripts/bench [SIZES]` (default 128 256 512) runs everything "
+        f"(this set took {fmt(minutes)} minutes) and rewrites this page and "
+        f"`{csv_link}`. Options: `--steps N` (default 100), `--rounds R`, "
+        "`--no-peer`, `--out FILE` (the page; the CSV goes to "
+        "figures/bench.csv beside it), `--quick` (16² and 32², 10 steps, "
+        "into /tmp/vpcontact_bench), `--configs REGEX` (only the runs "
+        "whose name matches, as in `'Trilinos Cholesky, 1 rank'` or "
+        "`'AMG, 2 ranks'`), `--against COMMIT[:REGEX]` (repeatable: "
+        "builds vpcontact at COMMIT in a temporary git worktree under the "
+        "work folder, runs each configuration it offers, or those whose "
+        "name matches REGEX, right after HEAD's and fills the section "
+        "*Phases against earlier commits*; the worktree is removed at the "
+        "end), `--huge-pages [REGEX]` (HEAD's build again with "
+        "`VPCONTACT_HUGE_PAGES=1`, its heap in transparent huge pages, "
+        "compared in the same section), `--one-thread [REGEX]` (HEAD's "
+        "build again on 1 rank with `DEAL_II_NUM_THREADS=1`, compared in "
+        "the same section and in the speed-up goals). "
+        "`scripts/bench_report.py CSV PAGE` "
+        "rewrites the page from the CSV alone. Run it with nothing else "
+        "busy on the machine."]
+
+
+def head_sections(best, sizes, algebras):
+    """The sections on HEAD's runs alone: which solver to pick, the ratios
+    against the peer, the growth with the mesh and the shares of a step."""
+    return [
+        "## Which to pick", "",
     ] + advice(best, sizes) + [
         "* `Cholesky` runs on one process only; `MUMPS` is the direct "
         "solver on several ranks. Both factorize once per stick set and "
@@ -609,48 +502,43 @@ def write_report(out, csv_path, rows):
         "the matrix. The damage solves are several CG solves per step, one "
         "for each active set the bound iteration tries "
         "([damage.md](damage.md)).", "",
-    ] + time_split(best, max(sizes)) + [
+    ] + time_split(best, max(sizes))
+
+
+def write_report(out, csv_path, rows):
+    import bench_goals  # noqa: E402  (it imports this module)
+    import adaptive_run_report  # noqa: E402  (next to this file)
+    import bench_solvers_report  # noqa: E402  (next to this file)
+    import bench_3d_report  # noqa: E402  (it imports this module)
+    import bench_setup_report  # noqa: E402  (it imports this module)
+    rows = [untimed_in_other(r) for r in rows]
+    ok = [r for r in rows if r["status"] == "ok"] or rows
+    m = ok[0]
+    # The tables of HEAD against the peer and the goals take HEAD's runs;
+    # the costs and the phases against earlier commits take every commit's.
+    best = medians([r for r in rows if is_head(r)])
+    every = medians(rows, key=lambda r: key(r) + (r["commit"],))
+    earlier = sorted({r["commit"] for r in rows if not is_head(r)})
+    sizes = sorted({int(r["size"]) for r in rows})
+    algebras = [a for a in ("Trilinos", "PETSc")
+                if any(k[1] == a for _, k in best)]
+    csv_link = os.path.relpath(os.path.abspath(csv_path),
+                               os.path.dirname(os.path.abspath(out)))
+    text = introduction(m, rows, csv_link) + [
+        "## What each solver costs", "",
+    ] + cost_table(every) + [
+        "", "## Phases against earlier commits", "",
+    ] + against_section(every) + [""] + head_sections(
+        best, sizes, algebras) + [
         "", f"## Against the project's goals at {max(sizes)}²", "",
         "The goals the project set itself for this program against the "
         "peer, the figures of this run, and what limits them.", "",
-    ] + bench_goals.goals(best, sizes, algebras, every) + scene_3d(csv_path) + setup_scaling(
-        csv_path) + bench_solvers_report.solver_choice(
-            csv_path, read_csv) + adaptive_run_report.adaptation_cost(
-                csv_path, read_csv)
-    # One line per reason, listing the runs it concerns.
-    reasons = {}
-    for r in rows:
-        if r["status"] != "ok":
-            reasons.setdefault(r["status"], []).append(
-                f"{name(r)} on {r['ranks']} rank{'s' * (int(r['ranks']) > 1)}"
-                + ("" if r["status"].startswith("skipped") else
-                   f" at {r['size']}² (round {r['round']})"))
-    notes = [f"* {'; '.join(runs)}: {status}"
-             for status, runs in reasons.items()]
-    if notes:
-        text += ["", "## Runs not in the tables", ""] + notes
-    text += [
-        "", "## Regenerating", "",
-        "`scripts/bench [SIZES]` (default 128 256 512) runs everything "
-        f"(this set took {fmt(minutes)} minutes) and rewrites this page and "
-        f"`{csv_link}`. Options: `--steps N` (default 100), `--rounds R`, "
-        "`--no-peer`, `--out FILE` (the page; the CSV goes to "
-        "figures/bench.csv beside it), `--quick` (16² and 32², 10 steps, "
-        "into /tmp/vpcontact_bench), `--configs REGEX` (only the runs "
-        "whose name matches, as in `'Trilinos Cholesky, 1 rank'` or "
-        "`'AMG, 2 ranks'`), `--against COMMIT[:REGEX]` (repeatable: "
-        "builds vpcontact at COMMIT in a temporary git worktree under the "
-        "work folder, runs each configuration it offers, or those whose "
-        "name matches REGEX, right after HEAD's and fills the section "
-        "*Phases against earlier commits*; the worktree is removed at the "
-        "end), `--huge-pages [REGEX]` (HEAD's build again with "
-        "`VPCONTACT_HUGE_PAGES=1`, its heap in transparent huge pages, "
-        "compared in the same section), `--one-thread [REGEX]` (HEAD's "
-        "build again on 1 rank with `DEAL_II_NUM_THREADS=1`, compared in "
-        "the same section and in the speed-up goals). "
-        "`scripts/bench_report.py CSV PAGE` "
-        "rewrites the page from the CSV alone. Run it with nothing else "
-        "busy on the machine."]
+    ] + bench_goals.goals(best, sizes, algebras, every) + (
+        bench_3d_report.scene_3d(csv_path)
+        + bench_setup_report.setup_scaling(csv_path)
+        + bench_solvers_report.solver_choice(csv_path, read_csv)
+        + adaptive_run_report.adaptation_cost(csv_path, read_csv))
+    text += runs_not_in_tables(rows) + regenerating(rows, csv_link)
     with open(out, "w") as f:
         f.write("\n".join(text) + "\n")
     # The decisions of the rule on own kernels go into the design page
