@@ -1,22 +1,18 @@
 """The section of doc/performance.md on the cost of adapting the mesh during
 a run, from doc/figures/adaptive_run.csv (scripts/adaptive_run_study), for
 scripts/bench_report.py."""
-import os
+from bench_report import sibling_rows
 
 
 def pct(v):
     return f"{100 * float(v):.1f} %"
 
 
-def adaptation_cost(csv_path, read_csv):
+def adaptation_cost(csv_path):
     """The share of each adapting run spent on its adaptations, split into
     marking, transfer (with p4est's repartitioning) and the setup on the new
     mesh, if adaptive_run.csv exists beside the CSV of the 2D runs."""
-    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)),
-                        "adaptive_run.csv")
-    if not os.path.exists(path):
-        return []
-    rows = read_csv(path)
+    rows = sibling_rows(csv_path, "adaptive_run.csv")
     if not rows:
         return []
     lines = [

@@ -1,8 +1,6 @@
 """The section *The 3D scenes* of doc/performance.md, from bench_3d.csv
 beside the CSV of the 2D runs (scripts/bench_3d writes it)."""
-import os
-
-from bench_report import PHASE_TITLES, fmt, read_csv
+from bench_report import PHASE_TITLES, fmt, sibling_rows
 
 
 def steps_text(steps):
@@ -27,11 +25,7 @@ def other_sittings(rows, m):
 def scene_3d(csv_path):
     """The section of the 3D paper scene from bench_3d.csv beside the
     CSV of the 2D runs (scripts/bench_3d), if there is one."""
-    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)),
-                        "bench_3d.csv")
-    if not os.path.exists(path):
-        return []
-    rows = [r for r in read_csv(path) if r["status"] == "ok"
+    rows = [r for r in sibling_rows(csv_path, "bench_3d.csv") if r["status"] == "ok"
             or r["status"].startswith("stopped after")]
     if not rows:
         return []

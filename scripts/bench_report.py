@@ -103,6 +103,13 @@ def read_csv(path):
     return rows
 
 
+def sibling_rows(csv_path, name):
+    """The rows of the CSV @p name beside @p csv_path (another benchmark's
+    figures for a section of the page), [] where there is none."""
+    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)), name)
+    return read_csv(path) if os.path.exists(path) else []
+
+
 def fmt(x):
     """A figure to three significant digits (all of its whole part); '–'
     where there is none."""
@@ -536,8 +543,8 @@ def write_report(out, csv_path, rows):
     ] + bench_goals.goals(best, sizes, algebras, every) + (
         bench_3d_report.scene_3d(csv_path)
         + bench_setup_report.setup_scaling(csv_path)
-        + bench_solvers_report.solver_choice(csv_path, read_csv)
-        + adaptive_run_report.adaptation_cost(csv_path, read_csv))
+        + bench_solvers_report.solver_choice(csv_path)
+        + adaptive_run_report.adaptation_cost(csv_path))
     text += runs_not_in_tables(rows) + regenerating(rows, csv_link)
     with open(out, "w") as f:
         f.write("\n".join(text) + "\n")

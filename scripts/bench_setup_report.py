@@ -1,19 +1,13 @@
 """The section *Setup against the mesh size* of doc/performance.md, from
 bench_setup.csv beside the CSV of the 2D runs (scripts/bench_setup writes
 it)."""
-import os
-
-from bench_report import fmt, read_csv
+from bench_report import fmt, sibling_rows
 
 
 def setup_scaling(csv_path):
     """The section of setup time against the mesh size from bench_setup.csv
     beside the CSV of the 2D runs (scripts/bench_setup), if there is one."""
-    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)),
-                        "bench_setup.csv")
-    if not os.path.exists(path):
-        return []
-    rows = read_csv(path)
+    rows = sibling_rows(csv_path, "bench_setup.csv")
     if not rows:
         return []
     m = rows[0]

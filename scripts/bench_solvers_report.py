@@ -1,7 +1,7 @@
 """The section of doc/performance.md on the automatic solver choice, from
 doc/figures/bench_solvers.csv (scripts/bench_solvers), for
 scripts/bench_report.py."""
-import os
+from bench_report import sibling_rows
 
 # The columns of the table: (solver, ranks).
 RUNS = [("Cholesky", 1), ("MUMPS", 1), ("CG with AMG", 1), ("MUMPS", 2),
@@ -12,15 +12,11 @@ def fmt(v):
     return f"{v:.3g}" if isinstance(v, (int, float)) else "–"
 
 
-def solver_choice(csv_path, read_csv):
+def solver_choice(csv_path):
     """The table of time per step of each solver on each scene and size,
     and the fastest on 1 and on 2 ranks, if bench_solvers.csv exists beside
     the CSV of the 2D runs."""
-    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)),
-                        "bench_solvers.csv")
-    if not os.path.exists(path):
-        return []
-    rows = read_csv(path)
+    rows = sibling_rows(csv_path, "bench_solvers.csv")
     if not rows:
         return []
     m = rows[0]
