@@ -13,8 +13,9 @@ def slower_reasons(slower, beside=()):
     @p beside: for each Cholesky run whose displacement solve is slower,
     (HEAD's row, the earlier commit's row)."""
     named = " ".join(t for _, t in slower)
-    text = ("Each figure is one round: HEAD's run and the earlier commit's "
-            "right after it (`--rounds N` takes the median of N).")
+    text = ("Each figure compares HEAD's run with the earlier commit's, "
+            "which ran right after it in the same round (with `--rounds N`, "
+            "each configuration's run of median total time).")
     for now, then in beside:
         def pair(r):
             return sum(r.get(p + "_ms") or 0 for p in
