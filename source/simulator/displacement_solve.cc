@@ -61,9 +61,9 @@ namespace VPContact
 
   template <int dim>
   void
-  DisplacementProblem<dim>::solve_increment(const double time,
+  DisplacementProblem<dim>::begin_increment(const double time,
                                             const bool   with_viscoplastic_rate,
-                                            const std::function<void()> &beside)
+                                            const bool   work_beside)
   {
     if (friction_problem)
       friction_problem->begin_step(time);
@@ -73,13 +73,6 @@ namespace VPContact
         || friction.unilateral())
       make_constraints(time, &solution);
 
-    // Without friction one linear solve. With friction, the primal-dual
-    // active set iteration: solve with the current stick and slip sets,
-    // recompute the friction multipliers from the residual, take the next
-    // sets; stop when no node changes. The sets of the previous step are
-    // the start (warm start). The work @p beside the solve (the damage
-    // step) runs once, in the first iteration; nothing it reads changes in
-    // the later ones (see solve_step()).
     last_linear_iterations = 0;
     kept_one_stick         = false;
     // The first start vector: the increments of the last steps
@@ -88,29 +81,55 @@ namespace VPContact
     if (with_viscoplastic_rate)
       increment_predictor.predict(increment_owned.block(0));
     // With CG, the solves after a change of the sets may stop early (see
-    // may_solve_loosely()). Once the sets stay, the rest of the step solves
+    // may_solve_loosely()). The first solve of a step is at the full
+    // tolerance: the last step's sets mostly hold.
+    may_loosen = may_solve_loosely();
+    displacement.solver.set_loose_tolerance(false);
+    assemble_rhs(time, with_viscoplastic_rate, false);
+    if (friction_problem)
+      friction_problem->add_slip_forces(constraints, displacement.rhs);
+    start_first_solve(work_beside);
+  }
+
+
+
+  template <int dim>
+  void
+  DisplacementProblem<dim>::solve_increment(const double time,
+                                            const bool   with_viscoplastic_rate)
+  {
+    begin_increment(time, with_viscoplastic_rate, false);
+    finish_increment(time, with_viscoplastic_rate);
+  }
+
+
+
+  template <int dim>
+  void
+  DisplacementProblem<dim>::finish_increment(const double time,
+                                             const bool with_viscoplastic_rate)
+  {
+    // Without friction one linear solve. With friction, the primal-dual
+    // active set iteration: solve with the current stick and slip sets,
+    // recompute the friction multipliers from the residual, take the next
+    // sets; stop when no node changes. The sets of the previous step are
+    // the start (warm start), and begin_increment() made the first solve.
+    // Once the sets stay after a loose solve, the rest of the step solves
     // at the full tolerance until they stay under such a solve too (a
-    // loose solve from there would do no CG iteration). The first solve of
-    // a step is at the full tolerance: the last step's sets mostly hold.
-    bool may_loosen = may_solve_loosely();
-    bool loose      = false;
-    for (unsigned int iteration = 1;; ++iteration)
+    // loose solve from there would do no CG iteration).
+    complete_first_solve();
+    bool loose = false;
+    for (unsigned int iteration = 1; friction_problem; ++iteration)
       {
-        displacement.solver.set_loose_tolerance(loose);
-        assemble_rhs(time, with_viscoplastic_rate, iteration > 1);
-        if (friction_problem)
-          friction_problem->add_slip_forces(constraints, displacement.rhs);
-        if (iteration == 1 && beside)
-          solve_displacement_beside(beside);
-        else
-          solve_displacement();
-        if (!friction_problem)
-          break;
         const bool settled = friction_sets_settled(time, iteration);
         if (settled && !loose)
           break;
         may_loosen = may_loosen && !settled;
         loose      = may_loosen;
+        displacement.solver.set_loose_tolerance(loose);
+        assemble_rhs(time, with_viscoplastic_rate, true);
+        friction_problem->add_slip_forces(constraints, displacement.rhs);
+        solve_displacement();
       }
     displacement.solver.set_loose_tolerance(false);
 
@@ -162,26 +181,21 @@ namespace VPContact
 
   template <int dim>
   void
-  DisplacementProblem<dim>::solve_displacement_beside(
-    const std::function<void()> &beside)
+  DisplacementProblem<dim>::start_first_solve(const bool work_beside)
   {
     // With the factors of a Cholesky factorization, the substitutions run
-    // in a second thread while this one does the work beside them, and
+    // in a second thread while the caller does the work beside them, and
     // "Solve" times only the wait for them that the work does not hide.
     // The second thread writes only the increment (and the factors'
     // workspace); the work beside must read neither it nor
     // displacement.rhs, and must not change the linear solver. Other
     // methods, and the factors after the matrix changed in place, solve
-    // after the work.
+    // after the work, in complete_first_solve().
     wait_for_linear_solver();
     if (displacement.solver.preconditioner_outdated())
       initialize_linear_solver();
-    if (!displacement.solver.solves_in_background())
-      {
-        beside();
-        solve_displacement();
-        return;
-      }
+    if (!work_beside || !displacement.solver.solves_in_background())
+      return;
     // After the substitutions the second thread also starts on the stress
     // update (see update_stress_ahead()) while the damage step still runs
     // here: once the damage has spread, the damage step is the longer of
@@ -190,14 +204,45 @@ namespace VPContact
     const double *const increment_entries
       = cell_kinematics.local_entries(increment);
     stress_ahead.restart();
-    std::future<unsigned int> solving = displacement.solver.solve_in_background(
+    first_solve = displacement.solver.solve_in_background(
       increment_owned.block(0),
       displacement.rhs,
       [this, increment_entries]() { update_stress_ahead(increment_entries); });
-    beside();
+  }
+
+
+
+  template <int dim>
+  void
+  DisplacementProblem<dim>::complete_first_solve()
+  {
+    if (!first_solve.valid())
+      {
+        solve_displacement();
+        return;
+      }
     stress_ahead.arrive();
     TimerOutput::Scope t(computing_timer, "Solve");
-    last_linear_iterations += solving.get();
+    last_linear_iterations += first_solve.get();
+  }
+
+
+
+  template <int dim>
+  void
+  DisplacementProblem<dim>::abandon_increment()
+  {
+    if (!first_solve.valid())
+      return;
+    stress_ahead.arrive();
+    try
+      {
+        first_solve.get();
+      }
+    catch (...)
+      {
+        // The error of the work beside is the one reported.
+      }
   }
 
 

@@ -389,7 +389,7 @@ namespace VPContact
     //
     // So the damage step need not wait for the displacement: with the
     // explicit scheme it runs beside the first displacement solve, as soon
-    // as the first assembly has stored the source (solve_increment()). It
+    // as the first assembly has stored the source (begin_increment()). It
     // reads the damage entries of the solution, which the increment leaves
     // alone and which is only updated after the active-set loop, and the
     // source at the points, which the later active-set iterations reuse
@@ -404,7 +404,7 @@ namespace VPContact
                  [](const Physics<dim> *object) {
                    return object->solves_in_step();
                  });
-    const std::function<void()> step = [this, n, &stepping]() {
+    const auto step = [this, n, &stepping]() {
       for (Physics<dim> *object : stepping)
         object->solve_step(n,
                            displacement_problem.solution_blocks(),
@@ -417,11 +417,23 @@ namespace VPContact
         step();
       }
     else
-      displacement_problem.solve_increment(time_discretization.time(n),
-                                           true,
-                                           stepping.empty() ?
-                                             std::function<void()>() :
-                                             step);
+      {
+        const double time = time_discretization.time(n);
+        displacement_problem.begin_increment(time, true, !stepping.empty());
+        // Should the work beside fail, the second thread is waited for
+        // before the error is reported: it writes the increment and the
+        // stress at the points.
+        try
+          {
+            step();
+          }
+        catch (...)
+          {
+            displacement_problem.abandon_increment();
+            throw;
+          }
+        displacement_problem.finish_increment(time, true);
+      }
     displacement_problem.update_stress(n);
     for (Physics<dim> *object : stepping)
       object->store(n, displacement_problem.solution_blocks());

@@ -27,6 +27,7 @@
 
 #include <array>
 #include <functional>
+#include <future>
 #include <memory>
 #include <string>
 #include <thread>
@@ -61,7 +62,7 @@ namespace VPContact
    * then sets sigma_n = sigma_{n-1} + k G_{n-1} + E eps(du). With Tresca
    * friction (a contact boundary and g > 0) it owns the FrictionProblem
    * and runs the stick/slip active set around the solves, in one loop
-   * (solve_increment()).
+   * (finish_increment()).
    *
    * It owns the sections "Elasticity", "Viscoplasticity", "Boundary
    * conditions" and "Contact", the displacement entries of "Solver", and
@@ -125,17 +126,29 @@ namespace VPContact
 
     /**
      * The displacement increment of the step at @p time, u_n = u_{n-1} +
-     * du. @p beside, if given, runs once, in the first active-set
-     * iteration after its right-hand side is assembled: while that
-     * solve's substitutions run in a second thread where the linear
-     * solver allows it (LinearSolver::solves_in_background()), else just
-     * before the solve. It must not touch this object's vectors or solver,
-     * and must read nothing that the later iterations change.
+     * du, in two calls, so that the caller can do other work beside the
+     * first solve. begin_increment() assembles the first right-hand side
+     * and, with @p work_beside where the linear solver allows it
+     * (LinearSolver::solves_in_background()), starts that solve's
+     * substitutions in a second thread; finish_increment() waits for them
+     * (or solves) and runs the rest of the stick/slip active set. The work
+     * between the two must not touch this object's vectors or solver, and
+     * must read nothing that the later iterations change.
      */
     void
-    solve_increment(const double                 time,
-                    const bool                   with_viscoplastic_rate,
-                    const std::function<void()> &beside = {});
+    begin_increment(const double time,
+                    const bool   with_viscoplastic_rate,
+                    const bool   work_beside);
+    /// See begin_increment(); the same arguments but @p work_beside.
+    void
+    finish_increment(const double time, const bool with_viscoplastic_rate);
+    /// Instead of finish_increment() where the work beside failed: wait
+    /// for the second thread, which writes the increment and the stress.
+    void
+    abandon_increment();
+    /// begin_increment() and finish_increment() with nothing between.
+    void
+    solve_increment(const double time, const bool with_viscoplastic_rate);
     /// The backward Euler alternative to solve_increment() (Newton's
     /// method on the whole step).
     void
@@ -319,8 +332,12 @@ namespace VPContact
 
     void
     solve_displacement();
+    /// The first solve of a step: started in the second thread (see
+    /// begin_increment()), or left to complete_first_solve().
     void
-    solve_displacement_beside(const std::function<void()> &beside);
+    start_first_solve(const bool work_beside);
+    void
+    complete_first_solve();
     /// Wait for factors begun in the background, timed as building them.
     void
     wait_for_linear_solver();
@@ -548,6 +565,12 @@ namespace VPContact
     LA::MPI::Vector contact_residual;
 
     unsigned int last_linear_iterations = 0;
+    /// The substitutions of a step's first solve in the second thread,
+    /// between begin_increment() and finish_increment(), where they run.
+    std::future<unsigned int> first_solve;
+    /// Whether the CG solves after a change of the friction sets may stop
+    /// early in this step (see may_solve_loosely()).
+    bool may_loosen = false;
   };
 } // namespace VPContact
 
