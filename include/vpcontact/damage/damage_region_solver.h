@@ -175,6 +175,11 @@ namespace VPContact
                     const double       tolerance,
                     const unsigned int max_iterations);
 
+    /// The share of each region row's entries in other ranks' columns that
+    /// D of Preconditioner::diagonal takes in (none on one rank).
+    std::vector<double>
+    cut_share_of_row_sums() const;
+
     /// The entries of the region's rows in other ranks' columns, and the
     /// owned entries the import sends (see prepare_diagonal_preconditioner()).
     void
