@@ -280,7 +280,10 @@ def goals(best, sizes, algebras, every=None):
          "that wrote this sentence counts both at 512² cells, and the "
          "attempts that did not help: a start vector corrected on "
          "subdomain constants, the region moved to equal shares of the "
-         "ranks, which took more iterations than it saved)."),
+         "ranks, which took more iterations than it saved). The "
+         "preconditioner's diagonal takes in half of the cut rows' entries "
+         "in other ranks' columns ([damage.md](damage.md)): that takes CG "
+         "iterations off the 2-rank solves, and leaves the imbalance."),
         ("error estimate at most 5 % of the run, best serial run",
          percent(ratio(fastest.get("estimate_ms"), fastest["per_step_ms"]))
          + f" ({config(fastest)})",

@@ -76,11 +76,11 @@ namespace VPContact
     // preconditioner keeps the row sums and its error vanishes on smooth
     // vectors. Across the cut the other rank's values are not frozen: they
     // change in the same solve, so putting all of the dropped entries in
-    // makes the cut too soft, and none of them leaves it too stiff. Half
-    // of them took the fewest CG iterations of the shares tried on the
-    // paper scene on 2 and 4 ranks, more so the finer the mesh, with the
-    // same printed results (the figures are in the message of the commit
-    // that introduced it).
+    // makes the cut too soft, and none of them leaves it too stiff. Of the
+    // shares tried on the paper scene on 2 and 4 ranks, half took the
+    // fewest CG iterations or within a few per cent of the fewest, and
+    // saved the more the finer the mesh, with the same printed results
+    // (the figures are in the message of the commit that introduced it).
     constexpr double    share = 0.5;
     const unsigned int  n     = region.size();
     std::vector<double> sums(n, 0.);
