@@ -272,6 +272,15 @@ namespace VPContact
       = (kind == Preconditioner::modified_incomplete_cholesky ? 1. : 0.);
     const unsigned int  n = factor_diagonal.size();
     std::vector<double> diagonal_of_k(factor_diagonal);
+    // MIC(0) starts, as the diagonal variant does, from a diagonal that
+    // holds half of the cut rows' entries in other ranks' columns (see
+    // cut_share_of_row_sums()).
+    if (kind == Preconditioner::modified_incomplete_cholesky)
+      {
+        const std::vector<double> cut_share = cut_share_of_row_sums();
+        for (unsigned int i = 0; i < n; ++i)
+          factor_diagonal[i] += cut_share[i];
+      }
     for (unsigned int i = 0; i < n; ++i)
       {
         const double pivot = factor_diagonal[i];

@@ -176,7 +176,8 @@ namespace VPContact
                     const unsigned int max_iterations);
 
     /// The share of each region row's entries in other ranks' columns that
-    /// D of Preconditioner::diagonal takes in (none on one rank).
+    /// D of Preconditioner::diagonal and the pivots of MIC(0) take in (none
+    /// on one rank).
     std::vector<double>
     cut_share_of_row_sums() const;
 
