@@ -53,6 +53,9 @@ namespace VPContact
     status.assign(dofs.size(), BoundStatus::free);
     upper_at_start.assign(dofs.size(), false);
     front_size = 0;
+    last_front.clear();
+    upper_at_last_front.clear();
+    rows_of_last_front = nullptr;
   }
 
 
@@ -275,23 +278,79 @@ namespace VPContact
 
 
   std::vector<unsigned int>
-  DamageBounds::front_by_graph(const OwnedRows &rows) const
+  DamageBounds::front_by_graph(const OwnedRows &rows)
   {
     // On one rank every neighbour is a node of this rank, and the front is
-    // found from the rows of the upper nodes alone: once the damage has
-    // spread, a fraction of the rows the product would visit. On an
-    // M-matrix the same nodes as front_by_product(); elsewhere every
-    // neighbour counts.
-    std::vector<unsigned int> on_front;
-    for (unsigned int i = 0; i < dofs.size(); ++i)
+    // found from the graph of K alone. On an M-matrix the same nodes as
+    // front_by_product(); elsewhere every neighbour counts.
+    //
+    // The front is asked for twice a step and moves by a few rings between
+    // two calls, while a pass over the rows of all upper nodes costs as
+    // much as a product with K. So only the nodes near the last front and
+    // near the nodes that changed set since are tested
+    // (front_candidates()); the first call on a mesh tests every node.
+    const auto on_front = [&](const unsigned int i) {
+      bool next_to_lower = false;
       if (status[i] == BoundStatus::upper)
         for_each_neighbour(i, rows, [&](const unsigned int j) {
-          if (status[j] == BoundStatus::upper)
-            return false;
-          on_front.push_back(i);
-          return true;
+          next_to_lower = (status[j] != BoundStatus::upper);
+          return next_to_lower;
         });
-    return on_front;
+      return next_to_lower;
+    };
+    std::vector<unsigned int> front;
+    if (rows_of_last_front != &rows
+        || upper_at_last_front.size() != dofs.size())
+      {
+        upper_at_last_front.resize(dofs.size());
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            upper_at_last_front[i] = (status[i] == BoundStatus::upper);
+            if (on_front(i))
+              front.push_back(i);
+          }
+      }
+    else
+      for (const unsigned int i : front_candidates(rows))
+        if (on_front(i))
+          front.push_back(i);
+    rows_of_last_front = &rows;
+    last_front         = front;
+    return front;
+  }
+
+
+
+  std::vector<unsigned int>
+  DamageBounds::front_candidates(const OwnedRows &rows)
+  {
+    // A node that joined the front since the last call is upper and next
+    // to a node below 1. Either it was not upper then, or that neighbour
+    // was, and then the neighbour changed set and the node is in its row
+    // (the graph of K is symmetric). So the last front, the nodes that
+    // entered or left the upper set (found against the upper set recorded
+    // then, one byte per node, which is brought up to date here) and every
+    // entry of their rows hold the new front.
+    std::vector<unsigned int> candidates = std::move(last_front);
+    const unsigned int *const columns    = rows.columns().data();
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      if (const char upper = (status[i] == BoundStatus::upper);
+          upper != upper_at_last_front[i])
+        {
+          upper_at_last_front[i] = upper;
+          candidates.push_back(i);
+          const unsigned int row = owned_position[i];
+          for (unsigned int e = rows.row_start()[row];
+               e < rows.row_start()[row + 1];
+               ++e)
+            if (columns[e] < node_of_owned.size()
+                && node_of_owned[columns[e]] >= 0)
+              candidates.push_back(node_of_owned[columns[e]]);
+        }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()),
+                     candidates.end());
+    return candidates;
   }
 
 

@@ -8,6 +8,12 @@
 // the matrix graph, on two from a matrix-vector product each (the rows cut
 // into halves between y = 8 and 9, so the rings cross to the other rank):
 // both must print the same.
+//
+// On one rank the front is found anew only near where the sets changed
+// since the last call. One DamageBounds taken through a sequence of sets
+// that grow, shrink and change at random must then free the same nodes at
+// each step as a new DamageBounds given the same sets, which tests every
+// node.
 #include <vpcontact/damage/damage_bounds.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
@@ -95,6 +101,93 @@ namespace
                 << " steps from the seed, upper ones at least " << nearest_upper
                 << std::endl;
   }
+
+  // The sets of step @p s: around @p seed, nodes within s - 1 steps are
+  // lower, free or (now and then) upper again, those at s steps free or
+  // upper, the rest upper; "at random" is a fixed hash of node and step.
+  void
+  set_sets(DamageBounds      &bounds,
+           const IndexSet    &owned,
+           const IndexSet    &relevant,
+           const unsigned int seed,
+           const unsigned int s)
+  {
+    const MPI_Comm  comm = MPI_COMM_WORLD;
+    LA::MPI::Vector state(owned, comm);
+    for (const auto i : owned)
+      {
+        const unsigned int d    = distance(i, seed);
+        const unsigned int hash = (i * 2654435761u + s * 40503u) >> 7;
+        double             set  = 1.;
+        if (d + 1 <= s)
+          set = (hash % 5 == 0 ? 1. : hash % 3 == 0 ? -1. : 0.);
+        else if (d == s)
+          set = (hash % 2 == 0 ? 0. : 1.);
+        state(i) = set;
+      }
+    LA::MPI::Vector ghosted(owned, relevant, comm);
+    ghosted = state;
+    bounds.read_state(ghosted);
+  }
+
+  void
+  check_incremental(const LA::SparseMatrix &matrix,
+                    const IndexSet         &owned,
+                    const IndexSet         &relevant,
+                    const unsigned int      seed)
+  {
+    const MPI_Comm  comm = matrix.get_mpi_communicator();
+    LA::MPI::Vector mass(owned, relevant, comm);
+    {
+      LA::MPI::Vector m(owned, comm);
+      m    = 1. / (n * n);
+      mass = m;
+    }
+    OwnedRows rows;
+    rows.reinit(matrix, owned, comm);
+    SupportProduct product;
+    product.initialize(rows);
+    DamageBounds kept;
+    kept.setup(relevant, owned, mass, comm);
+    const unsigned int steps[] = {0, 1, 2, 3, 5, 4, 4, 7, 2, 9, 12};
+    unsigned int       n_same  = 0;
+    for (unsigned int t = 0; t < std::size(steps); ++t)
+      {
+        const unsigned int rings = 1 + t % 3;
+        DamageBounds       fresh;
+        fresh.setup(relevant, owned, mass, comm);
+        unsigned int freed[2];
+        double       moved[2];
+        unsigned int index = 0;
+        for (DamageBounds *bounds : {&kept, &fresh})
+          {
+            set_sets(*bounds, owned, relevant, seed, steps[t]);
+            bounds->begin_step(product);
+            freed[index]   = bounds->free_ahead_of_front(product, rings);
+            moved[index++] = bounds->rings_moved();
+          }
+        LA::MPI::Vector state_kept(owned, comm), state_fresh(owned, comm);
+        kept.write_state(state_kept);
+        fresh.write_state(state_fresh);
+        state_kept -= state_fresh;
+        const bool same = (freed[0] == freed[1] && moved[0] == moved[1]
+                           && state_kept.linfty_norm() == 0.);
+        n_same += same;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::cout << "  sets of step " << steps[t] << ", " << rings
+                      << " rings: " << freed[0] << " nodes freed, rings moved "
+                      << moved[0];
+            if (!same)
+              std::cout << " (new bounds: " << freed[1] << ", " << moved[1]
+                        << ")";
+            std::cout << std::endl;
+          }
+      }
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "kept against fresh bounds: " << n_same << " of "
+                << std::size(steps) << " steps the same" << std::endl;
+  }
 } // namespace
 
 int
@@ -122,4 +215,6 @@ main(int argc, char **argv)
   check(matrix, owned, relevant, 0, 2);
   check(matrix, owned, relevant, centre, 8);
   check(matrix, owned, relevant, centre, 9);
+  check_incremental(matrix, owned, relevant, centre);
+  check_incremental(matrix, owned, relevant, 2 * (n + 1) + 13);
 }

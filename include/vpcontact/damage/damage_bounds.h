@@ -252,10 +252,22 @@ namespace VPContact
     std::vector<unsigned int>
     front_by_product(SupportProduct &product) const;
 
-    /// front() on one rank: a pass over the rows of K of the upper nodes
-    /// (@p rows).
+    /// front() on one rank, from the graph of K (@p rows): the nodes near
+    /// the last front and near the nodes that changed set since.
     std::vector<unsigned int>
-    front_by_graph(const OwnedRows &rows) const;
+    front_by_graph(const OwnedRows &rows);
+
+    /// The nodes that can be on the front now, ascending: those near the
+    /// last front and near the nodes that changed set since.
+    std::vector<unsigned int>
+    front_candidates(const OwnedRows &rows);
+
+    /// What front_by_graph() found last: the front, the upper set (one
+    /// byte per node) and the rows it read (nullptr: none yet on this
+    /// mesh).
+    std::vector<unsigned int> last_front;
+    std::vector<char>         upper_at_last_front;
+    const OwnedRows          *rows_of_last_front = nullptr;
 
     /// On one rank: the upper nodes next to the nodes of @p ring, which
     /// are free, in the graph of @p rows; they are freed too.
