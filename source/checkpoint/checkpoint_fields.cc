@@ -72,6 +72,7 @@ namespace VPContact
           return std::vector<char>();
         },
         false);
+      history.keep_initial_rates();
       triangulation.notify_ready_to_unpack(
         handle,
         [&history, n_q_points](

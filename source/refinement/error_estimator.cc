@@ -191,8 +191,11 @@ namespace VPContact
     // G_0 is stored instead).
     constexpr unsigned int n_c    = n_fields<dim, damage>;
     const auto             points = history->get_data((*cells)[i]);
-    const auto             rates  = history->initial_rates((*cells)[i]);
-    const auto             JxW    = history->JxW((*cells)[i]);
+    const auto rates = std::as_const(*history).initial_rates((*cells)[i]);
+    const ArrayView<SymmetricTensor<2, dim>> stored_rates
+      = (initial ? history->initial_rates((*cells)[i]) :
+                   ArrayView<SymmetricTensor<2, dim>>());
+    const auto JxW = history->JxW((*cells)[i]);
     std::array<SymmetricTensor<2, dim>, max_points> strain;
     std::array<double, max_points>                  zeta;
     double                                          f[max_points * n_c];
@@ -214,7 +217,7 @@ namespace VPContact
           }
         const auto rate = law.rate(points[q].stress, strain[q], zeta[q]);
         if (initial)
-          rates[q] = rate;
+          stored_rates[q] = rate;
         const auto change = rate - rates[q];
         size.time += scalar_product(change, change) * JxW[q];
       }
@@ -402,6 +405,8 @@ namespace VPContact
     // by color, then the others in this thread. Nothing per cell is kept
     // from one pass to the other. The second compares; both add each
     // cell's norms to its chunk's sums, in the cells' order.
+    if (n == 0)
+      history->keep_initial_rates();
     if (recovered.get_partitioner() != recovered_layout)
       recovered.reinit(recovered_layout);
     recovered = 0.;
@@ -450,6 +455,10 @@ namespace VPContact
       passes<false>(n, entries, law);
     if (every_steps > 1)
       dealii::LinearAlgebra::distributed::Vector<double>().swap(recovered);
+    // G_0, stored by the estimate of step 0, is zero at every point for a
+    // body at rest under the paper's law: its array then goes, and the
+    // time part reads zeros (StressHistory).
+    history->release_zero_initial_rates();
     return sum_norms(k, youngs_modulus);
   }
 

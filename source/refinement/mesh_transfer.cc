@@ -100,6 +100,7 @@ namespace VPContact
     solution.interpolate(out);
 
     constexpr unsigned int n_values = QuadraturePointHistory<dim>::n_values;
+    history.keep_initial_rates();
     mesh.notify_ready_to_unpack(
       handle,
       [this, &history](

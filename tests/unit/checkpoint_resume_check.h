@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <utility>
 
 #include "checkpoint_runner.h"
 
@@ -137,10 +138,10 @@ namespace
           {
             const auto points_a = a.history.get_data(cell_a);
             const auto points_b = b.history.get_data(cell_b);
-            const auto rates_a  = a.history.initial_rates(cell_a);
-            const auto rates_b  = b.history.initial_rates(cell_b);
-            const auto phi_a    = a.history.damage_sources(cell_a);
-            const auto phi_b    = b.history.damage_sources(cell_b);
+            const auto rates_a = std::as_const(a.history).initial_rates(cell_a);
+            const auto rates_b = std::as_const(b.history).initial_rates(cell_b);
+            const auto phi_a   = a.history.damage_sources(cell_a);
+            const auto phi_b   = b.history.damage_sources(cell_b);
             for (unsigned int q = 0; q < points_a.size(); ++q)
               {
                 double x[QuadraturePointHistory<2>::n_values];

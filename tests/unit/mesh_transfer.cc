@@ -103,6 +103,7 @@ namespace
                    const bool        store = false)
     {
       FEValues<2> values(fe, quadrature, flags);
+      history.keep_initial_rates();
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {

@@ -86,7 +86,12 @@ namespace VPContact
    * state, to which the time part of the error estimate refers
    * (ErrorEstimator): only the estimate reads it, and the passes of every
    * step over the points (right-hand side, stress update, damage load)
-   * then stream 48 bytes per point in 2D rather than 80.
+   * then stream 48 bytes per point in 2D rather than 80. A body that
+   * starts at rest under the paper's law has G_0 = 0 at every point; then
+   * release_zero_initial_rates() gives the array back (24 bytes a point in
+   * 2D, 48 in 3D) and initial_rates() reads zeros. A new mesh starts so:
+   * whoever writes G_0 (the estimate of step 0, a checkpoint or a mesh
+   * transfer read back) calls keep_initial_rates() first.
    *
    * The damage source phi_{n-1} of every point is kept in an array of its
    * own (damage_sources()): the assembly of the right-hand side writes it,
@@ -109,6 +114,7 @@ namespace VPContact
     {
       data.clear();
       rates.clear();
+      zero_rates.clear();
       sources.clear();
       weights.clear();
       initialized.clear();
@@ -125,7 +131,10 @@ namespace VPContact
         {
           n_points = n_q_points;
           data.resize(cell->get_triangulation().n_active_cells() * n_points);
-          rates.resize(data.size());
+          // G_0 reads zero until keep_initial_rates() gives it an array:
+          // the estimate of step 0 does, after the linear solver's set-up
+          // (whose peak of memory it would otherwise add to).
+          zero_rates.assign(n_points, SymmetricTensor<2, dim>());
           sources.assign(data.size(), 0.);
           weights.assign(data.size(), 0.);
           initialized.assign(cell->get_triangulation().n_active_cells(), false);
@@ -134,9 +143,10 @@ namespace VPContact
       std::fill(data.begin() + c * n_points,
                 data.begin() + (c + 1) * n_points,
                 QuadraturePointHistory<dim>());
-      std::fill(rates.begin() + c * n_points,
-                rates.begin() + (c + 1) * n_points,
-                SymmetricTensor<2, dim>());
+      if (!rates.empty())
+        std::fill(rates.begin() + c * n_points,
+                  rates.begin() + (c + 1) * n_points,
+                  SymmetricTensor<2, dim>());
       std::fill(sources.begin() + c * n_points,
                 sources.begin() + (c + 1) * n_points,
                 0.);
@@ -157,11 +167,14 @@ namespace VPContact
       return {data.data() + cell->active_cell_index() * n_points, n_points};
     }
 
-    /// G_0 at the points of @p cell (see the class documentation).
+    /// G_0 at the points of @p cell (see the class documentation), to be
+    /// written: keep_initial_rates() first.
     ArrayView<SymmetricTensor<2, dim>>
     initial_rates(const cell_iterator &cell)
     {
       Assert(initialized[cell->active_cell_index()], ExcInternalError());
+      AssertThrow(zero_rates.empty(),
+                  ExcMessage("keep_initial_rates() before writing G_0."));
       return {rates.data() + cell->active_cell_index() * n_points, n_points};
     }
 
@@ -169,7 +182,38 @@ namespace VPContact
     initial_rates(const cell_iterator &cell) const
     {
       Assert(initialized[cell->active_cell_index()], ExcInternalError());
+      if (!zero_rates.empty())
+        return {zero_rates.data(), n_points};
       return {rates.data() + cell->active_cell_index() * n_points, n_points};
+    }
+
+    /// If G_0 is zero at every point, give its array back; initial_rates()
+    /// then reads zeros. A pass over the points until the first rate that
+    /// is not zero.
+    void
+    release_zero_initial_rates()
+    {
+      if (!zero_rates.empty() || n_points == 0)
+        return;
+      for (const auto &rate : rates)
+        for (unsigned int c = 0;
+             c < SymmetricTensor<2, dim>::n_independent_components;
+             ++c)
+          if (rate.access_raw_entry(c) != 0.)
+            return;
+      std::vector<SymmetricTensor<2, dim>>().swap(rates);
+      zero_rates.assign(n_points, SymmetricTensor<2, dim>());
+    }
+
+    /// An array for G_0, zero at every point, where there is none (on a
+    /// new mesh, or after release_zero_initial_rates()); otherwise nothing.
+    void
+    keep_initial_rates()
+    {
+      if (zero_rates.empty())
+        return;
+      rates.assign(data.size(), SymmetricTensor<2, dim>());
+      zero_rates.clear();
     }
 
     /// phi_{n-1} at the points of @p cell (damage scenes).
@@ -226,10 +270,13 @@ namespace VPContact
   private:
     std::vector<QuadraturePointHistory<dim>> data;
     std::vector<SymmetricTensor<2, dim>>     rates;
-    std::vector<double>                      sources;
-    std::vector<double>                      weights;
-    std::vector<bool>                        initialized;
-    unsigned int                             n_points = 0;
+    /// One cell's zero rates, which initial_rates() reads once rates is
+    /// given back (empty while rates holds G_0).
+    std::vector<SymmetricTensor<2, dim>> zero_rates;
+    std::vector<double>                  sources;
+    std::vector<double>                  weights;
+    std::vector<bool>                    initialized;
+    unsigned int                         n_points = 0;
   };
 } // namespace VPContact
 
