@@ -433,11 +433,45 @@ def introduction(m, rows, csv_link):
         "holds the stress update. *memory*: peak resident set, rank 0 "
         "as vpcontact prints it, and summed over the ranks from "
         "`/usr/bin/time -v`.",
-        f"* Each run is the median of {rounds} round"
-        f"{'s' * (rounds > 1)} by total time." if rounds > 1 else
+        f"* Each run is the median of {rounds} rounds by total time"
+        + (" (of an even number, the slower of the middle two)."
+           if rounds % 2 == 0 else ".") if rounds > 1 else
         "* One round: the machine's speed can drift by tens of per cent "
-        "between runs; `--rounds 3` reports medians.", "",
-    ]
+        "between runs; `--rounds 3` reports medians.",
+    ] + spread_line(rows) + [""]
+
+
+def spread_line(rows):
+    """How far the rounds of one configuration lay apart on the largest
+    mesh, where the goals are measured: for each code (vpcontact, the
+    peer), the configuration whose slowest round took the most over its
+    fastest. A ratio between two runs on the page can move by as much
+    between benchmarks."""
+    runs = {}
+    largest = max(int(r["size"]) for r in rows)
+    for r in rows:
+        if r["status"] == "ok" and int(r["size"]) == largest:
+            runs.setdefault((int(r["size"]),) + key(r) + (r["commit"],),
+                            []).append(r["total_s"])
+    widest = {}
+    for k, totals in runs.items():
+        if len(totals) > 1:
+            spread = max(totals) / min(totals)
+            if spread > widest.get(k[1], (0,))[0]:
+                widest[k[1]] = (spread, k, totals)
+    if not widest:
+        return []
+    parts = [f"{'vpcontact' if code == 'vpcontact' else 'the peer'}'s up "
+             f"to {100 * (spread - 1):.0f} % ({k[0]}², "
+             f"{config({'algebra': k[2], 'solver': k[3]})}, {k[4]} rank"
+             f"{'s' * (k[4] > 1)}: "
+             + " / ".join(f"{t:.1f}" for t in totals) + " s)"
+             for code, (spread, k, totals) in sorted(widest.items(),
+                                                      reverse=True)]
+    return ["* Spread between the rounds, slowest over fastest total of one "
+            "configuration: " + "; ".join(parts) + ". A ratio of two "
+            "configurations on this page moves by up to as much between "
+            "benchmarks."]
 
 
 def runs_not_in_tables(rows):
