@@ -447,31 +447,28 @@ def spread_line(rows):
     peer), the configuration whose slowest round took the most over its
     fastest. A ratio between two runs on the page can move by as much
     between benchmarks."""
-    runs = {}
     largest = max(int(r["size"]) for r in rows)
+    runs = {}
     for r in rows:
         if r["status"] == "ok" and int(r["size"]) == largest:
-            runs.setdefault((int(r["size"]),) + key(r) + (r["commit"],),
-                            []).append(r["total_s"])
+            runs.setdefault(key(r) + (r["commit"],), []).append(r)
     widest = {}
-    for k, totals in runs.items():
-        if len(totals) > 1:
-            spread = max(totals) / min(totals)
-            if spread > widest.get(k[1], (0,))[0]:
-                widest[k[1]] = (spread, k, totals)
-    if not widest:
-        return []
+    for same in runs.values():
+        totals = [r["total_s"] for r in same]
+        spread = max(totals) / min(totals)
+        code = same[0]["code"]
+        if len(same) > 1 and spread > widest.get(code, (0,))[0]:
+            widest[code] = (spread, same[0], totals)
     parts = [f"{'vpcontact' if code == 'vpcontact' else 'the peer'}'s up "
-             f"to {100 * (spread - 1):.0f} % ({k[0]}², "
-             f"{config({'algebra': k[2], 'solver': k[3]})}, {k[4]} rank"
-             f"{'s' * (k[4] > 1)}: "
+             f"to {100 * (spread - 1):.0f} % ({name(r)}, {r['ranks']} "
+             f"rank{'s' * (int(r['ranks']) > 1)}: "
              + " / ".join(f"{t:.1f}" for t in totals) + " s)"
-             for code, (spread, k, totals) in sorted(widest.items(),
-                                                      reverse=True)]
-    return ["* Spread between the rounds, slowest over fastest total of one "
-            "configuration: " + "; ".join(parts) + ". A ratio of two "
-            "configurations on this page moves by up to as much between "
-            "benchmarks."]
+             for code, (spread, r, totals) in sorted(widest.items(),
+                                                     reverse=True)]
+    return ([f"* Spread between the rounds at {largest}², slowest over "
+             "fastest total of one configuration: " + "; ".join(parts)
+             + ". A ratio of two configurations on this page moves by up "
+             "to as much between benchmarks."] if parts else [])
 
 
 def runs_not_in_tables(rows):
