@@ -1,6 +1,7 @@
 // The command line: help, parameter listing, and running a scene.
 #include <vpcontact/app/application.h>
 #include <vpcontact/app/exit_agreement.h>
+#include <vpcontact/app/mpi_io_choice.h>
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/input/parameter_file.h>
 #include <vpcontact/input/parameter_listing.h>
@@ -300,6 +301,7 @@ namespace VPContact
     // processes of a machine share one session directory, and the first
     // to end removes the files that another's MPI-IO (the mesh of a
     // checkpoint) still uses.
+    prefer_romio_for_mpi_io();
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
     install_petsc_error_messages();
     set_blas_threads(1);

@@ -12,6 +12,8 @@
 //   naming each folder and file;
 // - no checkpoint at all: refused, naming the folder.
 // Checksums in the messages are masked (they depend on the bytes written).
+#include <vpcontact/app/mpi_io_choice.h>
+
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
@@ -78,6 +80,8 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // MPI-IO as the program chooses it (mpi_io_choice.h).
+  VPContact::prefer_romio_for_mpi_io();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // The folders of an earlier run of this test go: it damages them.
   for (const std::string folder : {"full", "part", "none"})

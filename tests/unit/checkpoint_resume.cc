@@ -11,6 +11,8 @@
 // checkpoint on 2 ranks; the linear solves then differ at round-off, and
 // the results must agree to 1e-8 (the solver tolerance is 1e-12), the
 // active sets exactly.
+#include <vpcontact/app/mpi_io_choice.h>
+
 #include <deal.II/base/mpi.h>
 
 #include "checkpoint_resume_check.h"
@@ -18,6 +20,8 @@
 int
 main(int argc, char **argv)
 {
+  // MPI-IO as the program chooses it (mpi_io_choice.h).
+  VPContact::prefer_romio_for_mpi_io();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check_resume("");
 }

@@ -10,6 +10,8 @@
 // freedom of every step included) and the final checkpoint's fields must be
 // identical; on 2 ranks the solves differ at round-off, and the results must
 // agree to 1e-8, the meshes and active sets exactly.
+#include <vpcontact/app/mpi_io_choice.h>
+
 #include <deal.II/base/mpi.h>
 
 #include "checkpoint_resume_check.h"
@@ -17,6 +19,8 @@
 int
 main(int argc, char **argv)
 {
+  // MPI-IO as the program chooses it (mpi_io_choice.h).
+  VPContact::prefer_romio_for_mpi_io();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check_resume(R"(
     subsection Mesh refinement

@@ -7,6 +7,8 @@
 // checkpoint after every step; then its newest checkpoint is dropped and the
 // run resumed from the one before, which must give the same statistics.csv
 // to the last digit (the wall time aside).
+#include <vpcontact/app/mpi_io_choice.h>
+
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
@@ -68,6 +70,8 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // MPI-IO as the program chooses it (mpi_io_choice.h).
+  VPContact::prefer_romio_for_mpi_io();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string                prm = SOURCE_DIR "/../../prm/";
 
