@@ -280,13 +280,14 @@ namespace VPContact
         }
     piece.add_point_fields(solution, names, interpretation);
 
+    if (output_layout.size() != dof_handler.n_dofs()
+        || output_layout.locally_owned_elements() != locally_owned_dofs)
+      output_layout.reinit(locally_owned_dofs, mpi_communicator);
     LA::MPI::Vector ghosted(solution);
-    GhostExchange   ghosts;
     for (const Physics<dim> *object : physics)
-      for (const NodalField<dim> &field :
-           object->output_fields(locally_owned_dofs))
+      for (const NodalField<dim> &field : object->output_fields(output_layout))
         {
-          ghosts.copy(field.values, ghosted);
+          output_ghosts.copy(field.values, ghosted);
           piece.add_point_fields(ghosted, *field.postprocessor);
         }
 

@@ -111,10 +111,11 @@ namespace VPContact
     solution_field_names() const;
 
     /// The object's nodal fields for the output of this step, with values
-    /// on the degrees of freedom @p owned_dofs of this rank (none by
-    /// default).
+    /// on this rank's degrees of freedom in the layout of @p owned_layout
+    /// (none by default). Vectors made with reinit(owned_layout) share its
+    /// layout, which the simulator keeps from one output to the next.
     virtual std::vector<NodalField<dim>>
-    output_fields(const IndexSet &owned_dofs) const;
+    output_fields(const LA::MPI::Vector &owned_layout) const;
 
     /// The iteration count of the step for the screen line (which only
     /// runs that do not promise deterministic output print), or "".
