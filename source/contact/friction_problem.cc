@@ -442,7 +442,7 @@ namespace VPContact
 
   template <int dim>
   std::vector<NodalField<dim>>
-  FrictionProblem<dim>::output_fields(const LA::MPI::Vector &owned_layout) const
+  FrictionProblem<dim>::output_fields(const OwnedLayout &owned_layout) const
   {
     // Status (0 none, 1 stick, 2 slip) and tangential traction sigma_tau of
     // the contact nodes, in the displacement entries of a vector on every
@@ -451,7 +451,7 @@ namespace VPContact
     // -sigma_nu and the gap, from one vector.
     std::vector<NodalField<dim>> fields(friction.unilateral() ? 4 : 2);
     for (auto &field : fields)
-      field.values.reinit(owned_layout);
+      owned_layout.make(field.values);
     active_set.fill_output(fields[0].values, fields[1].values);
     fields[0].postprocessor
       = std::make_shared<NodeScalarField<dim>>("contact_status", 0);

@@ -65,7 +65,7 @@ namespace VPContact
 
   template <int dim>
   std::vector<NodalField<dim>>
-  Physics<dim>::output_fields(const LA::MPI::Vector &) const
+  Physics<dim>::output_fields(const OwnedLayout &) const
   {
     return {};
   }

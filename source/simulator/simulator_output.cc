@@ -280,9 +280,6 @@ namespace VPContact
         }
     piece.add_point_fields(solution, names, interpretation);
 
-    if (output_layout.size() != dof_handler.n_dofs()
-        || output_layout.locally_owned_elements() != locally_owned_dofs)
-      output_layout.reinit(locally_owned_dofs, mpi_communicator);
     LA::MPI::Vector ghosted(solution);
     for (const Physics<dim> *object : physics)
       for (const NodalField<dim> &field : object->output_fields(output_layout))

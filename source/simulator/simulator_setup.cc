@@ -71,6 +71,7 @@ namespace VPContact
           return geometry.box_cell_index(cell->center());
         });
     locally_owned_dofs = dof_handler.locally_owned_dofs();
+    output_layout.reinit(locally_owned_dofs, mpi_communicator);
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
   }
 

@@ -64,8 +64,9 @@ tresca_pressures(const double end_time)
     std::cout.rdbuf(old);
 
     const SimulatorAccess<2> access = simulator.access();
-    const LA::MPI::Vector    layout(access.locally_owned_dofs, MPI_COMM_WORLD);
-    const auto               fields
+    OwnedLayout              layout;
+    layout.reinit(access.locally_owned_dofs, MPI_COMM_WORLD);
+    const auto fields
       = simulator.displacement().contact()->output_fields(layout);
     // The contact pressure is the field of component 0 of the third one.
     const LA::MPI::Vector                      &pressure = fields.at(2).values;

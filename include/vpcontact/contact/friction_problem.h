@@ -157,7 +157,7 @@ namespace VPContact
 
     /// The contact nodes' status and tangential traction, as output fields.
     std::vector<NodalField<dim>>
-    output_fields(const LA::MPI::Vector &owned_layout) const override;
+    output_fields(const OwnedLayout &owned_layout) const override;
 
     /// The sets into @p sets_owned and the counters a resumed run needs.
     void

@@ -9,6 +9,7 @@
 #include <vpcontact/fe/quadrature_history.h>
 #include <vpcontact/fe/scalar_node_space.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/owned_layout.h>
 #include <vpcontact/postprocess/statistics.h>
 #include <vpcontact/simulator/simulator_access.h>
 
@@ -111,11 +112,10 @@ namespace VPContact
     solution_field_names() const;
 
     /// The object's nodal fields for the output of this step, with values
-    /// on this rank's degrees of freedom in the layout of @p owned_layout
-    /// (none by default). Vectors made with reinit(owned_layout) share its
-    /// layout, which the simulator keeps from one output to the next.
+    /// on this rank's degrees of freedom, made by @p owned_layout (none by
+    /// default).
     virtual std::vector<NodalField<dim>>
-    output_fields(const LA::MPI::Vector &owned_layout) const;
+    output_fields(const OwnedLayout &owned_layout) const;
 
     /// The iteration count of the step for the screen line (which only
     /// runs that do not promise deterministic output print), or "".

@@ -280,14 +280,14 @@ namespace VPContact
     DoFHandler<dim>                                         dof_handler;
     IndexSet                                                locally_owned_dofs;
     IndexSet locally_relevant_dofs;
-    /// A vector on locally_owned_dofs whose layout the physics objects'
-    /// output fields share, and the ghost exchange from that layout to the
-    /// solution's, both kept from one field output to the next. On several
-    /// ranks a rank's degrees of freedom are two ranges (one per block),
-    /// and each new layout of them would cost at every output a table of
-    /// its indices, a directory of their owners and a ghost import.
-    LA::MPI::Vector output_layout;
-    GhostExchange   output_ghosts;
+    /// What makes the physics objects' output fields on locally_owned_dofs,
+    /// and the ghost exchange from their layout to the solution's, both
+    /// kept from one field output to the next: on several ranks a rank's
+    /// degrees of freedom are two ranges (one per block), and a new layout
+    /// of them would cost a table of its indices, a directory of their
+    /// owners and a ghost import at every output (see OwnedLayout).
+    OwnedLayout   output_layout;
+    GhostExchange output_ghosts;
     /// Steps 1-3: the displacement, the stress and Tresca friction.
     DisplacementProblem<dim> displacement_problem;
     /// The damage problem, step 4 (damage scenes only).
