@@ -2,7 +2,10 @@
 # for files named NAME (/dev/shm/sem.OMPIO_NAME), held at 0 as a process
 # that died holding it leaves it.
 # Usage: hold_semaphore.py make|remove NAME. "make" refuses a semaphore that
-# exists already (another program's), with exit status 2.
+# exists already (another program's), with exit status 2. "remove" first
+# releases it once: a program of the machine that opened a file NAME
+# through OMPIO meanwhile waits in it, and would wait for ever on a
+# semaphore removed while held; released, each waiter passes it on.
 import ctypes
 import os
 import sys
@@ -19,7 +22,12 @@ if action == "make":
               f"semaphore is a stale one: remove /dev/shm/sem.OMPIO_"
               f"{sys.argv[2]} and run the test again.", file=sys.stderr)
         sys.exit(2 if error == 17 else 1)
-elif libc.sem_unlink(name) != 0:
+else:
+    held = libc.sem_open(name, 0)
+    if held not in (None, 0):
+        libc.sem_post(ctypes.c_void_p(held))
+        libc.sem_close(ctypes.c_void_p(held))
+if action != "make" and libc.sem_unlink(name) != 0:
     print(f"hold_semaphore.py: cannot remove {name.decode()}: "
           f"{os.strerror(ctypes.get_errno())}", file=sys.stderr)
     sys.exit(1)
