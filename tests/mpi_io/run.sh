@@ -22,6 +22,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(pwd)/mpi_io_work
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# The resume on 2 ranks also on a machine of one core, as in tests/mpmd.
+export OMPI_MCA_rmaps_base_oversubscribe=1
 hold="/usr/bin/python3 $here/hold_semaphore.py"
 
 # The paper scene on 8 x 8 cells (that of tests/output_folder), 20 steps,
