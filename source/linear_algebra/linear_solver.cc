@@ -178,6 +178,9 @@ namespace VPContact
     // beside the caller's setup it takes longer (the two share the memory),
     // but the first solve then waits about 2 s less for it (scripts/bench,
     // "AMG setup or factorization").
+    built_on       = &matrix.trilinos_matrix();
+    built_nonzeros = matrix.n_nonzero_elements();
+    ++n_builds;
     factorizing = std::async(std::launch::async, [this, &matrix]() {
       const BlasThreadLimit all_but_one(
         std::max(MultithreadInfo::n_threads(), 2u) - 1);
@@ -220,6 +223,16 @@ namespace VPContact
   LinearSolver::initialize(const LA::SparseMatrix &matrix,
                            const NearNullSpace    &near_null_space)
   {
+    if (!update_values(matrix, near_null_space))
+      build(matrix, near_null_space);
+  }
+
+
+
+  void
+  LinearSolver::build(const LA::SparseMatrix &matrix,
+                      const NearNullSpace    &near_null_space)
+  {
     clear();
     solver = create_spd_solver(linear_algebra, method, "Solver/Linear solver");
     solver->initialize(matrix, near_null_space);
@@ -227,8 +240,35 @@ namespace VPContact
     if (method == SpdMethod::cg_amg)
       null_space = &near_null_space;
     this->matrix             = &matrix;
+    built_on                 = &matrix.trilinos_matrix();
+    built_nonzeros           = matrix.n_nonzero_elements();
     changed_since_initialize = false;
     iterations_before = iterations_after = 0;
+    ++n_builds;
+  }
+
+
+
+  bool
+  LinearSolver::update_values(const LA::SparseMatrix &matrix,
+                              const NearNullSpace    &near_null_space)
+  {
+    // A stick set that changes reassembles the matrix into its pattern and
+    // initializes the solver again; so does every Newton step of the
+    // implicit scheme. What the pattern alone decides need not be computed
+    // again. A solver built for another matrix, or for another pattern of
+    // this one, is built anew.
+    wait_for_factors();
+    if (solver == nullptr || this->matrix != &matrix
+        || built_on != &matrix.trilinos_matrix()
+        || built_nonzeros != matrix.n_nonzero_elements()
+        || (method == SpdMethod::cg_amg && null_space != &near_null_space)
+        || !solver->update_values())
+      return false;
+    changed_since_initialize = false;
+    iterations_before = iterations_after = 0;
+    ++n_updates;
+    return true;
   }
 
 

@@ -132,6 +132,31 @@ namespace VPContact
   SparseCholesky::factorize(const LA::SparseMatrix &matrix)
   {
     release();
+    factorize_numerically(matrix, true);
+  }
+
+
+
+  void
+  SparseCholesky::refactorize(const LA::SparseMatrix &matrix)
+  {
+    // A factorization that failed left no factor behind.
+    if (factor == nullptr)
+      {
+        factorize(matrix);
+        return;
+      }
+    Assert(static_cast<types::global_dof_index>(factor->n) == matrix.m(),
+           ExcMessage("The pattern of the matrix changed: factorize() it"));
+    factorize_numerically(matrix, false);
+  }
+
+
+
+  void
+  SparseCholesky::factorize_numerically(const LA::SparseMatrix &matrix,
+                                        const bool              analyze)
+  {
     const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
     const long              n      = epetra.NumMyRows();
     // create_spd_solver() refuses Cholesky under mpirun with the message
@@ -140,7 +165,10 @@ namespace VPContact
            ExcInternalError());
 
     cholmod_sparse *lower = lower_triangle(epetra, common);
-    factor                = cholmod_l_analyze(lower, &common);
+    // cholmod_l_factorize() takes a symbolic factor or the numeric one of
+    // the same pattern, whose order and supernodes it reuses.
+    if (analyze)
+      factor = cholmod_l_analyze(lower, &common);
     if (factor != nullptr)
       {
         // The supernodes' dense products, with deal.II's threads.

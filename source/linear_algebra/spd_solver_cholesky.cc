@@ -19,6 +19,7 @@ namespace VPContact
       void
       initialize(const LA::SparseMatrix &matrix, const NearNullSpace &) override
       {
+        this->matrix = &matrix;
         factors.factorize(matrix);
       }
 
@@ -46,8 +47,16 @@ namespace VPContact
         return true;
       }
 
+      bool
+      update_values() override
+      {
+        factors.refactorize(*matrix);
+        return true;
+      }
+
     private:
-      SparseCholesky factors;
+      const LA::SparseMatrix *matrix = nullptr;
+      SparseCholesky          factors;
     };
   } // namespace
 

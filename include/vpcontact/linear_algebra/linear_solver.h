@@ -61,10 +61,24 @@ namespace VPContact
      * near_null_space are the rigid motions, for AMG. With AMG it refers to
      * both until clear() or the next initialize() (a rebuild after
      * matrix_changed() uses them), with a factorization to the matrix.
+     *
+     * Called again for the same matrix and near null space, the matrix's
+     * values changed in place and its pattern not (a new pattern comes
+     * after clear(), as DisplacementProblem::setup() does it): the solver
+     * then keeps what depends on the pattern alone (SpdSolver::
+     * update_values(): CHOLMOD its order and supernodes).
      */
     void
     initialize(const LA::SparseMatrix &matrix,
                const NearNullSpace    &near_null_space);
+
+    /// How often initialize() built the preconditioner or factors anew,
+    /// and how often it updated them (for the tests).
+    std::pair<unsigned int, unsigned int>
+    n_builds_and_updates() const
+    {
+      return {n_builds, n_updates};
+    }
 
     /**
      * initialize() in a second thread where the method is Cholesky (one
@@ -209,6 +223,23 @@ namespace VPContact
     /// initialize() again with the matrix and near null space it has.
     void
     rebuild();
+
+    /// The preconditioner or factors of @p matrix, built anew.
+    void
+    build(const LA::SparseMatrix &matrix, const NearNullSpace &near_null_space);
+
+    /// SpdSolver::update_values() where initialize() is called again for
+    /// the matrix the solver was built for; returns whether it did.
+    bool
+    update_values(const LA::SparseMatrix &matrix,
+                  const NearNullSpace    &near_null_space);
+
+    /// The Epetra matrix and its number of entries when the solver was
+    /// built: a matrix that differs in either was reinitialised.
+    const void             *built_on       = nullptr;
+    types::global_dof_index built_nonzeros = 0;
+    unsigned int            n_builds       = 0;
+    unsigned int            n_updates      = 0;
 
     /// AMG's near null space of initialize(), for a rebuild after
     /// matrix_changed() (the caller's, not a copy).

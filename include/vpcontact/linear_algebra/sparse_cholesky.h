@@ -48,6 +48,17 @@ namespace VPContact
     void
     factorize(const LA::SparseMatrix &matrix);
 
+    /**
+     * factorize() for @p matrix with the pattern of the last
+     * factorization and new values: CHOLMOD's analysis (the fill-reducing
+     * order and the supernodes, which depend on the pattern alone) is kept
+     * and only the numeric factorization runs. The factors are those
+     * factorize() would compute, bit for bit. After a factorization that
+     * failed, factorize() itself.
+     */
+    void
+    refactorize(const LA::SparseMatrix &matrix);
+
     /// Whether the last factorization went by supernodes.
     bool
     is_supernodal() const;
@@ -59,6 +70,11 @@ namespace VPContact
   private:
     void
     release();
+
+    /// The numeric factorization of @p matrix with the analysis in factor,
+    /// made first where @p analyze; throws as factorize() says.
+    void
+    factorize_numerically(const LA::SparseMatrix &matrix, const bool analyze);
 
     mutable cholmod_common common;
     cholmod_factor        *factor = nullptr;

@@ -114,6 +114,24 @@ namespace VPContact
     /// Whether solve() uses factors (and ignores the tolerance).
     virtual bool
     is_direct() const = 0;
+
+    /**
+     * The values of the matrix given to initialize() changed in place; its
+     * sparsity pattern did not (a stick set changed its constraints, or a
+     * Newton step its tangent). Build the factors again from the new
+     * values, keeping what depends on the pattern alone, and return true;
+     * or return false, having changed nothing, where the method keeps
+     * nothing (the caller then calls initialize()). CHOLMOD keeps its
+     * fill-reducing order and its supernodes. AMG is built anew: ML's
+     * ReComputePreconditioner() keeps the fine level's eigenvalue estimate
+     * of the old values, and CG with it needed up to a hundred times the
+     * iterations (doc/design.md).
+     */
+    virtual bool
+    update_values()
+    {
+      return false;
+    }
   };
 
   /// The solver of @p method in @p package. Throws where the package does
