@@ -169,8 +169,9 @@ namespace VPContact
       }
     clear();
     solver = create_spd_solver(linear_algebra, method, "Solver/Linear solver");
-    this->matrix             = &matrix;
-    changed_since_initialize = false;
+    this->matrix                  = &matrix;
+    changed_since_initialize      = false;
+    rows_changed_since_initialize = 0;
     iterations_before = iterations_after = 0;
     // The BLAS gets all cores but the one the caller works on. On the
     // paper scene at 512^2 cells (2 cores, AMD EPYC) the supernodal
@@ -212,9 +213,10 @@ namespace VPContact
         factorizing = std::future<void>();
       }
     solver.reset();
-    matrix                   = nullptr;
-    null_space               = nullptr;
-    changed_since_initialize = false;
+    matrix                        = nullptr;
+    null_space                    = nullptr;
+    changed_since_initialize      = false;
+    rows_changed_since_initialize = 0;
   }
 
 
@@ -239,10 +241,11 @@ namespace VPContact
     // AMG's rigid motions, for a rebuild after the matrix changed in place.
     if (method == SpdMethod::cg_amg)
       null_space = &near_null_space;
-    this->matrix             = &matrix;
-    built_on                 = &matrix.trilinos_matrix();
-    built_nonzeros           = matrix.n_nonzero_elements();
-    changed_since_initialize = false;
+    this->matrix                  = &matrix;
+    built_on                      = &matrix.trilinos_matrix();
+    built_nonzeros                = matrix.n_nonzero_elements();
+    changed_since_initialize      = false;
+    rows_changed_since_initialize = 0;
     iterations_before = iterations_after = 0;
     ++n_builds;
   }
@@ -265,7 +268,8 @@ namespace VPContact
         || (method == SpdMethod::cg_amg && null_space != &near_null_space)
         || !solver->update_values())
       return false;
-    changed_since_initialize = false;
+    changed_since_initialize      = false;
+    rows_changed_since_initialize = 0;
     iterations_before = iterations_after = 0;
     ++n_updates;
     return true;
@@ -294,13 +298,44 @@ namespace VPContact
 
 
 
-  bool
-  LinearSolver::preconditioner_outdated() const
+  void
+  LinearSolver::rows_changed(const unsigned int changed_rows)
+  {
+    matrix_changed();
+    rows_changed_since_initialize += changed_rows;
+  }
+
+
+
+  unsigned int
+  LinearSolver::rebuild_threshold() const
   {
     // A factorization solves in one step, AMG in its own count; a few more
     // CG iterations are cheaper than a new factorization or hierarchy.
-    return changed_since_initialize
-           && iterations_after > std::max(2 * iterations_before, 10u);
+    return std::max(2 * iterations_before, 10u);
+  }
+
+
+
+  bool
+  LinearSolver::preconditioner_outdated() const
+  {
+    return changed_since_initialize && iterations_after > rebuild_threshold();
+  }
+
+
+
+  bool
+  LinearSolver::keeps_through(const unsigned int changed_rows) const
+  {
+    // iterations_before is the same on every rank, and so is the count of
+    // changed rows (summed over the ranks by the caller): all ranks decide
+    // alike.
+    if (solver == nullptr || factorizing.valid())
+      return false;
+    const unsigned int rank
+      = 2 * (rows_changed_since_initialize + changed_rows);
+    return std::max(iterations_before, 1u) + rank <= rebuild_threshold();
   }
 
 

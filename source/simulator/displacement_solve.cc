@@ -191,8 +191,13 @@ namespace VPContact
     // displacement.rhs, and must not change the linear solver. Other
     // methods, and the factors after the matrix changed in place, solve
     // after the work, in complete_first_solve().
+    // Factors or AMG kept through a change of the stick set serve within
+    // the step only: a run resumed from a checkpoint of the last step
+    // builds them from the matrix of this step's sets, and so must the
+    // uninterrupted run, for the two to compute the same bits.
     wait_for_linear_solver();
-    if (displacement.solver.preconditioner_outdated())
+    if (displacement.solver.preconditioner_outdated()
+        || displacement.solver.kept_through_changed_rows())
       initialize_linear_solver();
     if (!work_beside || !displacement.solver.solves_in_background())
       return;
@@ -296,7 +301,18 @@ namespace VPContact
       {
         make_constraints(time, &solution);
         assemble_stiffness_matrix();
-        initialize_linear_solver();
+        // A node that enters or leaves the stick set changes the rows and
+        // columns of its tangential unknowns (with unilateral contact, of
+        // all its unknowns). Where few change, CG preconditioned by the
+        // factors or the AMG of the matrix as it was solves within a few
+        // iterations, for less than new ones cost; LinearSolver rebuilds
+        // them once the changes add up.
+        const unsigned int rows
+          = changes.n_stick_changed * (friction.unilateral() ? dim : dim - 1);
+        if (displacement.solver.keeps_through(rows))
+          displacement.solver.rows_changed(rows);
+        else
+          initialize_linear_solver();
       }
     else if (changes.n_matrix_changed > 0)
       {

@@ -166,6 +166,37 @@ namespace VPContact
     void
     matrix_changed();
 
+    /**
+     * matrix_changed() for a change of the values in @p changed_rows rows
+     * and the same columns (a change of the stick set: the constraints of
+     * its nodes' unknowns), counted with those of earlier calls since the
+     * last initialize().
+     */
+    void
+    rows_changed(const unsigned int changed_rows);
+
+    /**
+     * Whether CG preconditioned by the preconditioner or factors of the
+     * matrix as it was at initialize() is expected to solve the matrix
+     * after @p changed_rows more rows and columns changed (see
+     * rows_changed()) within the iterations after which
+     * preconditioner_outdated() rebuilds them anyway. The change since
+     * initialize() has rank at most twice its rows, and CG preconditioned
+     * by the exact inverse of a matrix that differs from the system by a
+     * change of rank r converges in at most r + 1 iterations; AMG's
+     * iterations grow by about as many.
+     */
+    bool
+    keeps_through(const unsigned int changed_rows) const;
+
+    /// Whether the preconditioner or factors were kept through
+    /// rows_changed() since initialize().
+    bool
+    kept_through_changed_rows() const
+    {
+      return rows_changed_since_initialize > 0;
+    }
+
     /// Whether a solve after matrix_changed() needed so many more
     /// iterations than the solves before it that initialize() pays off.
     bool
@@ -219,6 +250,12 @@ namespace VPContact
     /// Iterations of the last solve before and after the matrix changed.
     unsigned int iterations_before = 0;
     unsigned int iterations_after  = 0;
+    /// The rows that rows_changed() reported since initialize().
+    unsigned int rows_changed_since_initialize = 0;
+
+    /// The iterations beyond which preconditioner_outdated() holds.
+    unsigned int
+    rebuild_threshold() const;
 
     /// initialize() again with the matrix and near null space it has.
     void
