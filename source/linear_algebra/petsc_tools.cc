@@ -157,6 +157,39 @@ namespace VPContact
 
 
   void
+  copy_values_to_petsc(const LA::SparseMatrix &matrix, Mat A)
+  {
+    // An entry outside A's pattern would be an error, not a new entry:
+    // the pattern, and with it what a factorization analysed, stays.
+    VPContactPetsc(MatSetOption(A, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE));
+    const Epetra_CrsMatrix &epetra     = matrix.trilinos_matrix();
+    const Epetra_Map       &column_map = epetra.ColMap();
+    std::vector<PetscInt>   columns;
+    for (int r = 0; r < epetra.NumMyRows(); ++r)
+      {
+        int     length;
+        double *entries;
+        int    *local_columns;
+        epetra.ExtractMyRowView(r, length, entries, local_columns);
+        columns.resize(length);
+        for (int j = 0; j < length; ++j)
+          columns[j] = column_map.GID64(local_columns[j]);
+        const PetscInt row = epetra.RowMap().GID64(r);
+        VPContactPetsc(MatSetValues(A,
+                                    1,
+                                    &row,
+                                    length,
+                                    columns.data(),
+                                    entries,
+                                    INSERT_VALUES));
+      }
+    VPContactPetsc(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+    VPContactPetsc(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+  }
+
+
+
+  void
   copy_to_petsc(const LA::MPI::Vector &from, Vec to)
   {
     PetscScalar *entries;

@@ -41,6 +41,7 @@ namespace VPContact
                  const NearNullSpace    &near_null_space) override
       {
         release();
+        this->matrix = &matrix;
         communicator = matrix.get_mpi_communicator();
         A            = copy_to_petsc(matrix, near_null_space.dofs_per_node);
         VPContactPetsc(MatCreateVecs(A, &x, &b));
@@ -61,23 +62,7 @@ namespace VPContact
             VPContactPetsc(KSPSetOperators(ksp, A, A));
             configure_cg(ksp);
           }
-        // A factorization's dense products get deal.II's threads in the
-        // BLAS; the solves keep one (see set_blas_threads()).
-        const PetscErrorCode error = [this]() {
-          const BlasThreads threads(is_direct() ? MultithreadInfo::n_threads() :
-                                                  1);
-          return KSPSetUp(ksp);
-        }();
-        AssertThrow(
-          error == 0,
-          ExcMessage(
-            "PETSc could not build the "
-            + std::string(is_direct() ? "factorization" : "preconditioner")
-            + " of the matrix (PETSc error code " + std::to_string(error)
-            + "): it is singular or not positive definite, or "
-              "memory ran out. Check that the boundary conditions "
-              "hold the body, or choose Solver/Linear solver = CG "
-              "with AMG, which needs far less memory."));
+        set_up();
       }
 
       unsigned int
@@ -127,7 +112,46 @@ namespace VPContact
                && method != SpdMethod::cg_incomplete_cholesky;
       }
 
+      bool
+      update_values() override
+      {
+        // MUMPS: the same pattern, so PETSc's PCSetUp() reuses the
+        // analysis (the ordering and the symbolic factorization) and
+        // factorizes numerically only. The preconditioners of CG are built
+        // anew.
+        if (!is_direct() || A == nullptr)
+          return false;
+        release_free_rows();
+        copy_values_to_petsc(*matrix, A);
+        VPContactPetsc(KSPSetOperators(ksp, A, A));
+        set_up();
+        return true;
+      }
+
     private:
+      /// KSPSetUp(): the factorization or the preconditioner of A.
+      void
+      set_up()
+      {
+        // A factorization's dense products get deal.II's threads in the
+        // BLAS; the solves keep one (see set_blas_threads()).
+        const PetscErrorCode error = [this]() {
+          const BlasThreads threads(is_direct() ? MultithreadInfo::n_threads() :
+                                                  1);
+          return KSPSetUp(ksp);
+        }();
+        AssertThrow(
+          error == 0,
+          ExcMessage(
+            "PETSc could not build the "
+            + std::string(is_direct() ? "factorization" : "preconditioner")
+            + " of the matrix (PETSc error code " + std::to_string(error)
+            + "): it is singular or not positive definite, or "
+              "memory ran out. Check that the boundary conditions "
+              "hold the body, or choose Solver/Linear solver = CG "
+              "with AMG, which needs far less memory."));
+      }
+
       /**
        * K_FF x_F = b_F on the free rows alone: their submatrix
        * (MatCreateSubMatrix) with its own preconditioner, built again only
@@ -296,11 +320,12 @@ namespace VPContact
           VecDestroy(&b);
       }
 
-      const SpdMethod method;
-      MPI_Comm        communicator = MPI_COMM_WORLD;
-      Mat             A            = nullptr;
-      KSP             ksp          = nullptr;
-      Vec             x = nullptr, b = nullptr;
+      const SpdMethod         method;
+      const LA::SparseMatrix *matrix       = nullptr;
+      MPI_Comm                communicator = MPI_COMM_WORLD;
+      Mat                     A            = nullptr;
+      KSP                     ksp          = nullptr;
+      Vec                     x = nullptr, b = nullptr;
       /// The free rows of the last solve that held rows, and their index
       /// set (pointing into free_rows), submatrix and solver.
       std::vector<PetscInt> free_rows;

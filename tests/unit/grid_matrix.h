@@ -61,14 +61,15 @@ namespace VPContact
 
 
   /// A LinearSolver with Solver/Linear solver = @p method and Solver/Linear
-  /// algebra = Trilinos.
+  /// algebra = @p algebra.
   inline LinearSolver
-  grid_linear_solver(const std::string &method)
+  grid_linear_solver(const std::string &method,
+                     const std::string &algebra = "Trilinos")
   {
     ParameterHandler prm;
     LinearSolver::declare_parameters(prm);
     prm.enter_subsection("Solver");
-    prm.set("Linear algebra", "Trilinos");
+    prm.set("Linear algebra", algebra);
     prm.set("Linear solver", method);
     prm.leave_subsection();
     LinearSolver solver;

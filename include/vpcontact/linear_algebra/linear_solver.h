@@ -66,7 +66,8 @@ namespace VPContact
      * values changed in place and its pattern not (a new pattern comes
      * after clear(), as DisplacementProblem::setup() does it): the solver
      * then keeps what depends on the pattern alone (SpdSolver::
-     * update_values(): CHOLMOD its order and supernodes).
+     * update_values(): CHOLMOD its order and supernodes, PETSc's MUMPS its
+     * analysis).
      */
     void
     initialize(const LA::SparseMatrix &matrix,

@@ -73,6 +73,12 @@ namespace VPContact
   void
   copy_to_petsc(const LA::MPI::Vector &from, Vec to);
 
+  /// The values of @p matrix into @p A, a copy_to_petsc() of it whose
+  /// pattern it still has; PETSc's state of A marks the values as changed
+  /// and its nonzero pattern as the same.
+  void
+  copy_values_to_petsc(const LA::SparseMatrix &matrix, Mat A);
+
   /// The owned entries of the PETSc vector @p from into @p to.
   void
   copy_from_petsc(Vec from, LA::MPI::Vector &to);

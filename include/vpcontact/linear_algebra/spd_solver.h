@@ -122,10 +122,11 @@ namespace VPContact
      * values, keeping what depends on the pattern alone, and return true;
      * or return false, having changed nothing, where the method keeps
      * nothing (the caller then calls initialize()). CHOLMOD keeps its
-     * fill-reducing order and its supernodes. AMG is built anew: ML's
+     * fill-reducing order and its supernodes, PETSc's MUMPS its analysis
+     * (order and symbolic factorization). AMG is built anew: ML's
      * ReComputePreconditioner() keeps the fine level's eigenvalue estimate
-     * of the old values, and CG with it needed up to a hundred times the
-     * iterations (doc/design.md).
+     * of the old values, and CG with it needed far more iterations than
+     * with a new ML (doc/design.md).
      */
     virtual bool
     update_values()
