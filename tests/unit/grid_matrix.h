@@ -60,6 +60,19 @@ namespace VPContact
   }
 
 
+  /// The constants on the rows @p all, as AMG's near null space of the
+  /// grid matrix (a scalar problem).
+  inline NearNullSpace
+  constant_modes(const IndexSet &all)
+  {
+    NearNullSpace modes;
+    modes.modes.emplace_back(all, MPI_COMM_WORLD);
+    modes.modes.back() = 1.;
+    return modes;
+  }
+
+
+
   /// A LinearSolver with Solver/Linear solver = @p method and Solver/Linear
   /// algebra = @p algebra.
   inline LinearSolver

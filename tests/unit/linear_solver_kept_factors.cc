@@ -80,7 +80,7 @@ main(int argc, char **argv)
   LinearSolver solver = grid_linear_solver("Cholesky");
   solver.initialize(K, constants);
   std::vector<unsigned int> constrained;
-  for (const std::vector<unsigned int> change :
+  for (const std::vector<unsigned int> &change :
        {std::vector<unsigned int>{41, 42, 43}, {300}, {900}})
     {
       std::printf("%zu more rows constrained (%zu in all): kept: %s\n",

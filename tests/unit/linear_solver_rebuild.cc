@@ -70,9 +70,7 @@ main(int argc, char **argv)
 
   LA::SparseMatrix K;
   grid_matrix(m, 1., K);
-  NearNullSpace modes;
-  modes.modes.emplace_back(all, MPI_COMM_WORLD);
-  modes.modes.back() = 1.;
+  const NearNullSpace modes = constant_modes(all);
 
   LinearSolver solver = grid_linear_solver("CG with AMG");
   solver.initialize(K, modes);

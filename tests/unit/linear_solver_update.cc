@@ -120,9 +120,7 @@ namespace
     const IndexSet   all = grid_rows(m);
     LA::SparseMatrix K;
     grid_matrix(m, 1., K);
-    NearNullSpace modes;
-    modes.modes.emplace_back(all, MPI_COMM_WORLD);
-    modes.modes.back() = 1.;
+    const NearNullSpace modes = constant_modes(all);
 
     LinearSolver solver = grid_linear_solver(method, algebra);
     solver.initialize(K, modes);
