@@ -122,9 +122,11 @@ def table(counter, total, limit):
 
 
 def page(a, own, library, over_time, peak_rss):
-    peak, when, later = over_time
+    _, when, later = over_time
     info = bench.machine()
-    total = sum(own.values())
+    # The time series samples the heap; the split above is taken at the
+    # exact peak.
+    total = peak = sum(own.values())
     solver = sum(c for k, c in own.items() if "SpdSolver::initialize" in k)
     return f"""# Memory
 
@@ -134,8 +136,8 @@ Where the heap of a run goes at its peak: the paper scene
 recorded by heaptrack and written by `scripts/memory_profile` at commit
 {info["commit"]} on {info["date"]} ({info["cpu"]}, {info["cores"]} cores).
 
-* Peak heap: {peak / MB:.0f} MB, reached at {100 * when:.0f} % of the run's
-  time (heaptrack's clock). The largest heap in the last quarter of the run
+* Peak heap: {peak / MB:.0f} MB, reached at about {100 * when:.0f} % of the
+  run's time (heaptrack's clock, from its sampled time series). The largest heap in the last quarter of the run
   (its steps and field output, long after the set-up): {later / MB:.0f} MB.
   Peak resident set (the heap, the program's libraries and the stacks) of
   the same run without heaptrack, as the run prints it: {peak_rss}.
