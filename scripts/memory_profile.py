@@ -91,9 +91,10 @@ def peak_split(data, workdir):
 
 
 def heap_over_time(data, workdir):
-    """(peak, its time as a share of the run, the largest heap in the last
-    quarter of the run: the steps, long after the set-up) from heaptrack's
-    time series."""
+    """(the time of the sampled peak as a share of the run, the largest heap
+    in the last quarter of the run: the steps, long after the set-up) from
+    heaptrack's time series. The series samples the heap; the exact peak is
+    the sum of peak_split()'s parts."""
     series = os.path.join(workdir, "massif.txt")
     subprocess.run(["heaptrack_print", "-f", data, "--print-massif", series],
                    capture_output=True, check=True)
@@ -108,7 +109,7 @@ def heap_over_time(data, workdir):
     end = points[-1][0]
     peak = max(points, key=lambda p: p[1])
     later = max(m for t, m in points if t >= 0.75 * end)
-    return peak[1], peak[0] / end, later
+    return peak[0] / end, later
 
 
 def table(counter, total, limit):
@@ -122,10 +123,8 @@ def table(counter, total, limit):
 
 
 def page(a, own, library, over_time, peak_rss):
-    _, when, later = over_time
+    when, later = over_time
     info = bench.machine()
-    # The time series samples the heap; the split above is taken at the
-    # exact peak.
     total = peak = sum(own.values())
     solver = sum(c for k, c in own.items() if "SpdSolver::initialize" in k)
     return f"""# Memory
