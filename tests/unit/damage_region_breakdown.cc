@@ -31,11 +31,7 @@ main(int argc, char **argv)
   const DenseMatrix kershaw
     = {{3, -2, 0, 2}, {-2, 3, -2, 0}, {0, -2, 3, -2}, {2, 0, -2, 3}};
   IndexSet         all = complete_index_set(4);
-  LA::SparseMatrix matrix;
-  copy_to_trilinos(kershaw, all, comm, matrix);
-
-  OwnedRows rows;
-  rows.reinit(matrix, all, comm);
+  const RegionRows region(kershaw, all, comm);
 
   for (const auto kind :
        {DamageRegionSolver::Preconditioner::incomplete_cholesky,
@@ -43,7 +39,7 @@ main(int argc, char **argv)
         DamageRegionSolver::Preconditioner::diagonal})
     {
       DamageRegionSolver solver;
-      solver.initialize(rows, kind);
+      solver.initialize(region.rows, kind);
       solver.begin_step();
 
       for (const bool hold_node_1 : {false, true})

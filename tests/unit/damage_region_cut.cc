@@ -28,52 +28,23 @@ main(int argc, char **argv)
   const MPI_Comm                   comm = MPI_COMM_WORLD;
   const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
-  const unsigned int n = 32, nodes = (n + 1) * (n + 1);
-  const double       h = 1. / n, kappa = 0.01, k = 1.;
-  const auto         node
-    = [&](unsigned int x, unsigned int y) { return y * (n + 1) + x; };
-  const DenseMatrix K = q1_damage_matrix(n, kappa, k);
-
-  std::vector<double> exact(nodes, 0.);
-  std::vector<bool>   held(nodes, false);
-  for (unsigned int y = 0; y <= n; ++y)
-    for (unsigned int x = 0; x <= n; ++x)
-      {
-        held[node(x, y)] = (4 * x < n);
-        if (!held[node(x, y)])
-          exact[node(x, y)] = 1. + std::sin(3. * x * h) * std::cos(2. * y * h);
-      }
-
-  const IndexSet   owned = contiguous_rows(nodes, comm);
-  LA::SparseMatrix matrix;
-  copy_to_trilinos(K, owned, comm, matrix);
-  OwnedRows rows;
-  rows.reinit(matrix, owned, comm);
+  // The model problem of 32 x 32 cells with the left quarter held (see
+  // HeldQuarterProblem), its rows split into contiguous halves.
+  const HeldQuarterProblem problem(32, 0.01, 1., comm);
 
   for (const auto kind :
        {DamageRegionSolver::Preconditioner::modified_incomplete_cholesky,
         DamageRegionSolver::Preconditioner::diagonal})
     {
       DamageRegionSolver solver;
-      solver.initialize(rows, kind);
+      solver.initialize(problem.region.rows, kind);
       solver.begin_step();
-      LA::MPI::Vector           b(owned, comm), x(owned, comm);
+      LA::MPI::Vector           b, x(problem.owned, comm);
       std::vector<unsigned int> held_positions;
-      for (const auto i : owned)
-        {
-          double s = 0;
-          for (unsigned int j = 0; j < nodes; ++j)
-            s += K[i][j] * exact[j];
-          b(i) = (held[i] ? 0. : s);
-          if (held[i])
-            held_positions.push_back(owned.index_within_set(i));
-        }
+      problem.right_hand_side(b, held_positions);
       const unsigned int iterations
         = solver.solve(b, x, held_positions, 1e-12, 500);
-      double error = 0;
-      for (const auto i : owned)
-        error = std::max(error, std::abs(x(i) - exact[i]));
-      error = Utilities::MPI::max(error, comm);
+      const double error = problem.error(x);
       if (rank == 0)
         std::cout << name(kind)
                   << ": |x - x*| below 1e-9: " << (error < 1e-9 ? "yes" : "no")

@@ -30,11 +30,7 @@ main(int argc, char **argv)
   const DenseMatrix  K = q1_damage_matrix(n, kappa, k);
 
   IndexSet         all = complete_index_set(nodes);
-  LA::SparseMatrix matrix;
-  copy_to_trilinos(K, all, comm, matrix);
-
-  OwnedRows rows;
-  rows.reinit(matrix, all, comm);
+  const RegionRows region(K, all, comm);
 
   for (const auto kind :
        {DamageRegionSolver::Preconditioner::modified_incomplete_cholesky,
@@ -42,7 +38,7 @@ main(int argc, char **argv)
         DamageRegionSolver::Preconditioner::diagonal})
     {
       DamageRegionSolver solver;
-      solver.initialize(rows, kind);
+      solver.initialize(region.rows, kind);
       solver.begin_step();
       LA::MPI::Vector b(all, comm), x(all, comm);
       for (unsigned int i = 0; i < nodes; ++i)
