@@ -119,4 +119,34 @@ def solver_choice(csv_path):
         lines.append(f"| {scene} | {size} | {unknowns} | {fmt(its)} | " +
                      " | ".join(fmt(times.get(k)) for k in RUNS) +
                      f" | {fastest(1)} | {fastest(2)} |")
+    return lines + build_table(rows, cases)
+
+
+def build_table(rows, cases):
+    """The same runs split into what the builds cost and what a step costs
+    besides, for a run of another length: a run of S steps takes about
+    build + S x step (a scene whose stick set changes builds again at each
+    change, so its build grows with the steps too)."""
+    if not any(isinstance(r.get("build_s"), (int, float)) for r in rows):
+        return []
+    lines = [
+        "", "The same runs split in two: *build* is the time the run spent "
+        "building the factorizations or AMG hierarchies, or waiting for a "
+        "factorization begun in the background (Cholesky's runs beside the "
+        "damage step), in s over the ten steps; *step* the rest of a step "
+        "in ms. A run of S steps without stick changes takes about "
+        "build + S x step: the ten-step figures above weigh the build ten "
+        "times as much as a run of 100 steps does.", "",
+        "| scene | size | " +
+        " | ".join(f"{s}, {n} rank{'s' if n > 1 else ''}: build [s] / step "
+                   "[ms]" for s, n in RUNS) + " |",
+        "|---|---|" + "---|" * len(RUNS)]
+    for scene, size in cases:
+        by = {(r["solver"], int(r["ranks"])): r for r in rows
+              if (r["scene"], r["size"]) == (scene, size)
+              and r["status"] == "ok"}
+        cells = [f"{fmt(by[k].get('build_s'))} / "
+                 f"{fmt(by[k].get('rest_per_step_ms'))}" if k in by else "–"
+                 for k in RUNS]
+        lines.append(f"| {scene} | {size} | " + " | ".join(cells) + " |")
     return lines
