@@ -34,12 +34,15 @@ namespace VPContact
         "Linear solver",
         "automatic",
         Patterns::Selection("automatic|CG with AMG|direct|MUMPS|Cholesky"),
-        "'automatic': a factorization where scripts/bench_solvers measured "
-        "one faster over a run than CG with AMG (doc/performance.md): "
-        "'Cholesky' on one process, 'MUMPS' on several, up to 2,000,000 "
-        "displacement unknowns in 2D and 210,000 in 3D (on several ranks in "
-        "2D from 100,000 on), else 'CG with AMG'; the header names the "
-        "choice. 'CG with AMG': "
+        "'automatic': by the size alone, 'Cholesky' on one process and "
+        "'MUMPS' on several up to 2,000,000 displacement unknowns in 2D and "
+        "210,000 in 3D (on several ranks in 2D from 100,000 on), else 'CG "
+        "with AMG'; the header names the choice. It weighs neither the "
+        "run's steps against a factorization's one-time cost nor the "
+        "factorizations anew after changes of the stick set: for a short "
+        "run in 3D, or a scene whose base slips, 'CG with AMG' is often "
+        "the faster (doc/performance.md, scripts/bench_solvers). "
+        "'CG with AMG': "
         "conjugate gradients preconditioned by algebraic "
         "multigrid whose near null space holds the rigid motions; scales to "
         "large meshes and many ranks, and is the method for 3D. 'direct': "
@@ -106,14 +109,19 @@ namespace VPContact
   LinearSolver::factorization_limit(const unsigned int dim,
                                     const unsigned int n_ranks)
   {
-    // A factorization was the faster over ten steps in every case that
-    // scripts/bench_solvers measured (doc/performance.md): 2D up to 526,000
-    // displacement unknowns (512^2), 3D up to 207,000 (40^3, and the block
-    // with a hole refined twice), on 1 and 2 ranks. The limits are those
-    // sizes in 3D, where the factors grow like n^(4/3), and 2,000,000 in
-    // 2D, where they grow like n log n (the run of 512^2 took 1.7 GB with
-    // the factors and 1.3 GB with AMG: four times the unknowns stay within
-    // a machine's memory).
+    // The limits of a measurement (scripts/bench_solvers at 13ac5d8) that
+    // counted the steps' times only, in which a factorization was the
+    // faster in every case: 2D up to 526,000 displacement unknowns (512^2),
+    // 3D up to 207,000 (40^3, and the block with a hole refined twice).
+    // With the factorization's time counted wherever the run spends it,
+    // CG with AMG is the faster over ten steps in 3D from 24^3 on, and on
+    // scenes whose stick set changes in most steps; a factorization wins
+    // beyond a number of steps that grows with the size (65 at 40^3;
+    // doc/performance.md splits each run into its builds and its steps).
+    // The limits are those sizes in 3D, where the factors grow like
+    // n^(4/3), and 2,000,000 in 2D, where they grow like n log n (the run
+    // of 512^2 took 1.7 GB with the factors and 1.3 GB with AMG: four times
+    // the unknowns stay within a machine's memory).
     (void)n_ranks;
     return dim == 2 ? 2000000 : 210000;
   }
