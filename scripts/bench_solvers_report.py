@@ -12,11 +12,11 @@ def fmt(v):
     return f"{v:.3g}" if isinstance(v, (int, float)) else "–"
 
 
-def fastest_on_one_rank(rows, scene, size):
-    """The solver of the least time per step on 1 rank, or None."""
+def fastest(rows, scene, size, ranks):
+    """The solver of the least time per step on @p ranks ranks, or None."""
     times = {r["solver"]: r["per_step_ms"] for r in rows
              if (r["scene"], r["size"]) == (scene, size)
-             and int(r["ranks"]) == 1 and r["status"] == "ok"}
+             and int(r["ranks"]) == ranks and r["status"] == "ok"}
     return min(times, key=times.get) if times else None
 
 
@@ -26,7 +26,7 @@ def one_rank_sentence(rows, cases):
     anew at each change) or with one factorization that ten steps do not
     amortize."""
     lost = [(scene, size) for scene, size in cases
-            if fastest_on_one_rank(rows, scene, size) == "CG with AMG"]
+            if fastest(rows, scene, size, 1) == "CG with AMG"]
     if not lost:
         return ("On one rank a factorization was the faster in every case "
                 "measured.")
@@ -111,14 +111,11 @@ def solver_choice(csv_path):
                     else dofs)
         times = {k: r["per_step_ms"] for k, r in by.items()
                  if r["status"] == "ok"}
-
-        def fastest(n):
-            runs = {k: t for k, t in times.items() if k[1] == n}
-            return min(runs, key=runs.get)[0] if runs else "–"
+        best = [fastest(rows, scene, size, n) or "–" for n in (1, 2)]
         its = by.get(("Cholesky", 1), {}).get("active_set_its", "")
         lines.append(f"| {scene} | {size} | {unknowns} | {fmt(its)} | " +
                      " | ".join(fmt(times.get(k)) for k in RUNS) +
-                     f" | {fastest(1)} | {fastest(2)} |")
+                     f" | {best[0]} | {best[1]} |")
     return lines + build_table(rows, cases)
 
 
