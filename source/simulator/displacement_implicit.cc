@@ -81,6 +81,10 @@ namespace VPContact
   DisplacementProblem<dim>::assemble_implicit_system(const double time)
   {
     TimerOutput::Scope t(computing_timer, "Assemble implicit system");
+    // The first step's assembly may come while the factorization of the
+    // elastic matrix, begun in the background at set-up, still reads the
+    // matrix that is about to be zeroed here: wait for it.
+    displacement.solver.wait_for_factors();
 
     // At the current increment du: sigma(du) solves sigma - k G(sigma) =
     // sigma_{n-1} + E eps(du) at each quadrature point, with the tangent

@@ -318,7 +318,9 @@ namespace VPContact
       {
         // Only slip directions turned: the matrix changes at those nodes,
         // and the preconditioner or factors of the matrix as it was still
-        // precondition CG well (LinearSolver::matrix_changed()).
+        // precondition CG well (LinearSolver::matrix_changed()). A
+        // factorization begun in the background reads the matrix.
+        displacement.solver.wait_for_factors();
         friction_problem->update_slip_stiffness(constraints,
                                                 displacement.matrix);
         displacement.solver.matrix_changed();
