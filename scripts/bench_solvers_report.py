@@ -1,6 +1,8 @@
 """The section of doc/performance.md on the automatic solver choice, from
 doc/figures/bench_solvers.csv (scripts/bench_solvers), for
 scripts/bench_report.py."""
+import math
+
 from bench_report import sibling_rows
 
 # The columns of the table: (solver, ranks).
@@ -44,19 +46,20 @@ def one_rank_sentence(rows, cases):
         parts.append(
             " in " + ", ".join(slip) + ", where the stick set changes in "
             "most steps (column *AS its per step*) and each change "
-            "factorizes anew: for such a scene name `CG with AMG`, which "
-            "builds its hierarchy in a fraction of a factorization's time")
+            "factorizes anew, while CG with AMG builds its hierarchy in a "
+            "fraction of a factorization's time: `automatic` takes CG with "
+            "AMG for the rest of a run once its factorizations anew come "
+            "more often than one per S\\* steps (after a margin of two, "
+            "`SolverChoice::refactorizations_outweigh()`), and for such a "
+            "scene `CG with AMG` named in the parameter file saves the "
+            "factorizations before the switch")
     if once:
         parts.append(
             " in " + ", ".join(once) + ", where one factorization serves "
             "the whole run and ten steps do not amortize it: over a longer "
             "run its share falls (the paper scene's 100 steps at the top of "
             "this page)")
-    return (text + ";".join(parts) + ". The limits above are those of an "
-            "earlier measurement (commit 13ac5d8, Intel Xeon), which "
-            "counted the time of the steps only; `automatic` does not yet "
-            "weigh the steps of the run against a factorization's one-time "
-            "cost.")
+    return text + ";".join(parts) + "."
 
 
 def solver_choice(csv_path):
@@ -80,14 +83,15 @@ def solver_choice(csv_path):
         "each displacement solver on 2D and 3D scenes of growing size; "
         "*unknowns* counts the displacement's (the damage's come on top in "
         "the paper scenes). `Solver/Linear solver = automatic` (the default) "
-        "takes Cholesky on one process and MUMPS on several up to "
-        "`LinearSolver::factorization_limit()` displacement unknowns "
-        "(2,000,000 in 2D, 210,000 in 3D), and CG with AMG beyond; on several "
-        "ranks in 2D it factorizes only from 100,000 unknowns on, since "
-        "below that CG with AMG was the faster on 2 ranks. "
+        "takes Cholesky on one process and MUMPS on several where the run's "
+        "steps repay the factorization's one-time cost, and CG with AMG "
+        "elsewhere (`SolverChoice`; the second table below gives the number "
+        "of steps from which a factorization is the faster). "
         + one_rank_sentence(rows, cases) +
-        " The 3D limit "
-        "is the largest 3D size measured, the 2D limit is set by the "
+        " A factorization is never taken beyond 2,000,000 displacement "
+        "unknowns in 2D and 210,000 in 3D (`SolverChoice::"
+        "factorization_limit()`): the 3D limit is the largest 3D size "
+        "measured, the 2D limit is set by the "
         "factors' memory, which grows like n log n. *AS its per step*: the "
         "friction active-set iterations per step (of the run with Cholesky); "
         "each one after the first whose stick set changed builds the "
@@ -119,6 +123,92 @@ def solver_choice(csv_path):
     return lines + build_table(rows, cases)
 
 
+# The factorization against CG with AMG on as many ranks.
+PAIRS = [(("Cholesky", 1), ("CG with AMG", 1)),
+         (("MUMPS", 2), ("CG with AMG", 2))]
+
+# Cases where a factorization's step is less than this share of CG with
+# AMG's enter the fit of the break-even counts: where the two steps cost
+# about the same, the count is large and ill-determined, and the choice
+# changes a run's time little either way.
+FIT_STEP_RATIO = 1 / 1.2
+
+
+def break_even(by, pair):
+    """The number of steps from which the factorization of @p pair is the
+    faster (0: from the first), None where it is the slower per step, or
+    '' where a run is missing."""
+    f, a = (by.get(k) for k in pair)
+    if not f or not a or not all(isinstance(r.get(c), (int, float))
+                                 for r in (f, a)
+                                 for c in ("build_s", "rest_per_step_ms")):
+        return ""
+    gain = a["rest_per_step_ms"] - f["rest_per_step_ms"]
+    if gain <= 0:
+        return None
+    return max(0.0, (f["build_s"] - a["build_s"]) * 1000 / gain)
+
+
+def unknowns_of(row):
+    """The displacement unknowns of a run (the damage's come on top in the
+    paper scenes)."""
+    dim, dofs = int(row["dim"]), row["dofs"]
+    damage = row["scene"] in ("paper_fig1", "paper_fig1_3d")
+    return dofs * dim // (dim + 1) if damage else dofs
+
+
+def fit_break_even(rows, cases, dim, pair):
+    """Least squares of log S* on log n over the cases of @p dim without
+    slip where the factorization's step is clearly the cheaper: S*(10^5)
+    and the power, or None."""
+    points = []
+    for scene, size in cases:
+        by = {(r["solver"], int(r["ranks"])): r for r in rows
+              if (r["scene"], r["size"]) == (scene, size)
+              and r["status"] == "ok" and int(r["dim"]) == dim}
+        f, a = (by.get(k) for k in pair)
+        s = break_even(by, pair)
+        if (not isinstance(s, float) or s <= 0
+                or float(f.get("active_set_its") or 1) > 1.5
+                or f["rest_per_step_ms"] > FIT_STEP_RATIO *
+                a["rest_per_step_ms"]):
+            continue
+        points.append((math.log(unknowns_of(f) / 1e5), math.log(s)))
+    if len(points) < 2:
+        return None
+    mx = sum(x for x, _ in points) / len(points)
+    my = sum(y for _, y in points) / len(points)
+    power = (sum((x - mx) * (y - my) for x, y in points)
+             / sum((x - mx) ** 2 for x, _ in points))
+    return math.exp(my - power * mx), power, len(points)
+
+
+def fit_sentence(rows, cases):
+    """The fitted break-even counts, which SolverChoice::break_even_steps()
+    takes (rounded) from the run of this benchmark that it names."""
+    parts = []
+    for dim in (2, 3):
+        for pair in PAIRS:
+            fit = fit_break_even(rows, cases, dim, pair)
+            if fit:
+                n = pair[0][1]
+                parts.append(
+                    f"{dim}D on {n} rank{'s' if n > 1 else ''}: "
+                    f"S\\*(10^5) = {fit[0]:.3g}, p = {fit[1]:.2f} "
+                    f"({fit[2]} cases)")
+    if not parts:
+        return []
+    return ["", "Fitted as S\\*(n) = S\\*(10^5) (n / 10^5)^p over the cases "
+            "without slip in which the factorization's step costs less than "
+            f"{FIT_STEP_RATIO:.2f} of CG with AMG's (where the two cost about "
+            "the same, S\\* is large and ill-determined, and the choice changes "
+            "a run's time little): " + "; ".join(parts) + ". "
+            "`SolverChoice::break_even_steps()` takes these fits, rounded, "
+            "from the run of commit fb85cda, and those of 2 ranks for any "
+            "number of processes: on more, CG with AMG gains more from them "
+            "than MUMPS does, so there the counts are lower bounds."]
+
+
 def build_table(rows, cases):
     """The same runs split into what the builds cost and what a step costs
     besides, for a run of another length: a run of S steps takes about
@@ -133,11 +223,16 @@ def build_table(rows, cases):
         "damage step), in s over the ten steps; *step* the rest of a step "
         "in ms. A run of S steps without stick changes takes about "
         "build + S x step: the ten-step figures above weigh the build ten "
-        "times as much as a run of 100 steps does.", "",
+        "times as much as a run of 100 steps does. *S\\**: the number of "
+        "steps from which the factorization is the faster, (build − build "
+        "of CG with AMG) / (step of CG with AMG − step), on 1 rank "
+        "(Cholesky) and 2 ranks (MUMPS); *never* where its step costs "
+        "more.", "",
         "| scene | size | " +
         " | ".join(f"{s}, {n} rank{'s' if n > 1 else ''}: build [s] / step "
-                   "[ms]" for s, n in RUNS) + " |",
-        "|---|---|" + "---|" * len(RUNS)]
+                   "[ms]" for s, n in RUNS) + " | S\\*, 1 rank | S\\*, "
+        "2 ranks |",
+        "|---|---|" + "---|" * (len(RUNS) + 2)]
     for scene, size in cases:
         by = {(r["solver"], int(r["ranks"])): r for r in rows
               if (r["scene"], r["size"]) == (scene, size)
@@ -145,5 +240,9 @@ def build_table(rows, cases):
         cells = [f"{fmt(by[k].get('build_s'))} / "
                  f"{fmt(by[k].get('rest_per_step_ms'))}" if k in by else "–"
                  for k in RUNS]
+        for pair in PAIRS:
+            count = break_even(by, pair)
+            cells.append("never" if count is None else
+                         f"{count:.0f}" if isinstance(count, float) else "–")
         lines.append(f"| {scene} | {size} | " + " | ".join(cells) + " |")
-    return lines
+    return lines + fit_sentence(rows, cases)

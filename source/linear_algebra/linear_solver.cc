@@ -4,6 +4,7 @@
 #include <vpcontact/linear_algebra/finite_values.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/linear_algebra/linear_solver.h>
+#include <vpcontact/linear_algebra/solver_choice.h>
 
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/lac/solver_cg.h>
@@ -34,14 +35,18 @@ namespace VPContact
         "Linear solver",
         "automatic",
         Patterns::Selection("automatic|CG with AMG|direct|MUMPS|Cholesky"),
-        "'automatic': by the size alone, 'Cholesky' on one process and "
-        "'MUMPS' on several up to 2,000,000 displacement unknowns in 2D and "
-        "210,000 in 3D (on several ranks in 2D from 100,000 on), else 'CG "
-        "with AMG'; the header names the choice. It weighs neither the "
-        "run's steps against a factorization's one-time cost nor the "
-        "factorizations anew after changes of the stick set: for a short "
-        "run in 3D, or a scene whose base slips, 'CG with AMG' is often "
-        "the faster (doc/performance.md, scripts/bench_solvers). "
+        "'automatic': a factorization ('Cholesky' on one process, 'MUMPS' "
+        "on several) where the run's steps repay its one-time cost, else "
+        "'CG with AMG'. A factorization is taken below 20,000 displacement "
+        "unknowns, never beyond 2,000,000 in 2D and 210,000 in 3D (its "
+        "factors' memory) nor on several processes in 2D below 100,000, and "
+        "in between from a number of steps (Time/End time over Time step) "
+        "that grows with the unknowns: about 8 in 2D on one process, 46 in "
+        "3D at 100,000 unknowns (doc/performance.md, scripts/bench_solvers). "
+        "The header names the choice and why. Each change of the stick set "
+        "factorizes anew; once they come more often than the steps repay, "
+        "the run takes 'CG with AMG' for its remaining steps and says so "
+        "(for a scene whose base slips, name 'CG with AMG'). "
         "'CG with AMG': "
         "conjugate gradients preconditioned by algebraic "
         "multigrid whose near null space holds the rigid motions; scales to "
@@ -105,51 +110,66 @@ namespace VPContact
 
 
 
-  types::global_dof_index
-  LinearSolver::factorization_limit(const unsigned int dim,
-                                    const unsigned int n_ranks)
+  void
+  LinearSolver::choose(const types::global_dof_index n_unknowns,
+                       const unsigned int            dim,
+                       const unsigned int            n_ranks,
+                       const unsigned int            n_steps)
   {
-    // The limits of a measurement (scripts/bench_solvers at 13ac5d8) that
-    // counted the steps' times only, in which a factorization was the
-    // faster in every case: 2D up to 526,000 displacement unknowns (512^2),
-    // 3D up to 207,000 (40^3, and the block with a hole refined twice).
-    // With the factorization's time counted wherever the run spends it,
-    // CG with AMG is the faster over ten steps in 3D from 24^3 on, and on
-    // scenes whose stick set changes in most steps; a factorization wins
-    // beyond a number of steps that grows with the size (65 at 40^3;
-    // doc/performance.md splits each run into its builds and its steps).
-    // The limits are those sizes in 3D, where the factors grow like
-    // n^(4/3), and 2,000,000 in 2D, where they grow like n log n (the run
-    // of 512^2 took 1.7 GB with the factors and 1.3 GB with AMG: four times
-    // the unknowns stay within a machine's memory).
-    (void)n_ranks;
-    return dim == 2 ? 2000000 : 210000;
+    // A run that switched to AMG keeps it on the meshes that adapting
+    // gives it: its stick set goes on changing there.
+    if (!automatic || switched)
+      return;
+    const SolverChoice choice(n_unknowns, dim, n_ranks, n_steps);
+    method       = choice.method();
+    reason       = choice.reason();
+    may_switch   = choice.chosen_for_steps();
+    steps_needed = choice.steps_needed();
+  }
+
+
+
+  bool
+  LinearSolver::switch_after_refactorization(const unsigned int step)
+  {
+    if (!may_switch || switched)
+      return false;
+    ++n_refactorizations;
+    if (!SolverChoice::refactorizations_outweigh(n_refactorizations,
+                                                 step,
+                                                 steps_needed))
+      return false;
+    restore_choice_state(n_refactorizations, true);
+    return true;
+  }
+
+
+
+  std::pair<unsigned int, bool>
+  LinearSolver::choice_state() const
+  {
+    return {n_refactorizations, switched};
   }
 
 
 
   void
-  LinearSolver::choose(const types::global_dof_index n_unknowns,
-                       const unsigned int            dim,
-                       const unsigned int            n_ranks)
+  LinearSolver::restore_choice_state(const unsigned int n_refactorizations,
+                                     const bool         switched)
   {
-    if (!automatic)
+    // Not switched: the next choose() takes the method anew (a new cycle
+    // of a convergence study is a new run). Switched: the factors go, and
+    // initialize() builds the AMG hierarchy.
+    this->n_refactorizations = n_refactorizations;
+    if (!automatic || switched == this->switched)
       return;
-    // On several ranks, MUMPS' distributed analysis costs more than CG
-    // with AMG below about 100,000 unknowns in 2D (scripts/bench_solvers:
-    // AMG was the faster on 2 ranks up to 52,704, MUMPS from 132,098).
-    const types::global_dof_index limit = factorization_limit(dim, n_ranks);
-    const types::global_dof_index least
-      = (n_ranks > 1 && dim == 2) ? 100000 : 0;
-    const bool factorize = (n_unknowns <= limit && n_unknowns >= least);
-    method               = (!factorize   ? SpdMethod::cg_amg :
-                            n_ranks == 1 ? SpdMethod::cholesky :
-                                           SpdMethod::mumps);
-    reason = std::to_string(n_unknowns) + " displacement unknowns in "
-             + std::to_string(dim) + "D on " + std::to_string(n_ranks)
-             + (n_ranks == 1 ? " process" : " processes") + ", "
-             + (factorize ? "within" : "outside") + " [" + std::to_string(least)
-             + ", " + std::to_string(limit) + "]";
+    this->switched = switched;
+    if (!switched)
+      return;
+    clear();
+    method = SpdMethod::cg_amg;
+    reason += "; CG with AMG after " + std::to_string(n_refactorizations)
+              + " factorizations anew for changes of the stick set";
   }
 
 

@@ -66,6 +66,40 @@ namespace VPContact
 
 
 
+  template <int dim>
+  std::map<std::string, double>
+  DisplacementProblem<dim>::checkpoint_counters() const
+  {
+    // The predictor's count of increments, and the automatic solver
+    // choice's state.
+    const auto [n_refactorizations, switched]
+      = displacement.solver.choice_state();
+    return {{"recorded_increments", increment_predictor.n_recorded()},
+            {"solver_refactorizations", n_refactorizations},
+            {"solver_switched_to_amg", switched ? 1. : 0.}};
+  }
+
+
+
+  template <int dim>
+  void
+  DisplacementProblem<dim>::restore_solver_choice(
+    const std::map<std::string, double> &counters)
+  {
+    // A checkpoint of a run that switched to AMG resumes with AMG, and
+    // counts on from its factorizations anew; a checkpoint written before
+    // these counters existed holds none, as a run that never switched.
+    const auto counter = [&counters](const std::string &name) {
+      const auto found = counters.find(name);
+      return found == counters.end() ? 0. : found->second;
+    };
+    displacement.solver.restore_choice_state(
+      static_cast<unsigned int>(counter("solver_refactorizations")),
+      counter("solver_switched_to_amg") > 0);
+  }
+
+
+
   template class DisplacementProblem<2>;
   template class DisplacementProblem<3>;
 } // namespace VPContact

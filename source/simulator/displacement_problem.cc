@@ -131,7 +131,8 @@ namespace VPContact
     // (Cholesky factorizes in the one process of the whole job only.)
     displacement.solver.choose(n_u,
                                dim,
-                               Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+                               Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+                               time_discretization.n_steps());
   }
 
 

@@ -279,6 +279,22 @@ namespace VPContact
 
 
   template <int dim>
+  void
+  DisplacementProblem<dim>::note_refactorization(const double time)
+  {
+    // A factorization anew for the changed stick set: the automatic choice
+    // counts it, and may take CG with AMG from here on (LinearSolver::
+    // switch_after_refactorization()); the screen says so.
+    const auto step = static_cast<unsigned int>(
+      std::lround(time / time_discretization.step_size()));
+    if (displacement.solver.switch_after_refactorization(step))
+      pcout << "  solver: " << displacement.solver.description()
+            << ", from step " << step << " on" << std::endl;
+  }
+
+
+
+  template <int dim>
   bool
   DisplacementProblem<dim>::friction_sets_settled(const double       time,
                                                   const unsigned int iteration)
@@ -312,7 +328,10 @@ namespace VPContact
         if (displacement.solver.keeps_through(rows))
           displacement.solver.rows_changed(rows);
         else
-          initialize_linear_solver();
+          {
+            note_refactorization(time);
+            initialize_linear_solver();
+          }
       }
     else if (changes.n_matrix_changed > 0)
       {

@@ -111,8 +111,6 @@ namespace VPContact
         const auto maxima = error_estimator.running_maxima();
         metadata.counters.insert(maxima.begin(), maxima.end());
       }
-    metadata.counters["recorded_increments"]
-      = displacement_problem.predictor().n_recorded();
     metadata.parameters = checkpointing.problem_parameters();
     checkpointing.finish_writing(
       metadata,
@@ -129,7 +127,8 @@ namespace VPContact
   // The fields of a checkpoint, into @p folder/mesh with the distributed
   // mesh: the vectors listed at n_checkpoint_vectors, in that order, and the
   // stress history. Returns the counters of the friction and damage
-  // problems, which checkpoint.json holds with the other counters.
+  // problems and the displacement problem's (the predictor's and the
+  // solver choice's), which checkpoint.json holds with the other counters.
   template <int dim>
   std::map<std::string, double>
   Simulator<dim>::write_checkpoint_fields(const std::string &folder)
@@ -149,6 +148,7 @@ namespace VPContact
                            displacement_problem.history(),
                            discretization.quadrature().size(),
                            folder + "/mesh");
+    state.counters.merge(displacement_problem.checkpoint_counters());
     return state.counters;
   }
 
@@ -293,6 +293,7 @@ namespace VPContact
     displacement_problem.resume_at(time_discretization.time(checkpoint.step),
                                    static_cast<unsigned int>(
                                      counter("recorded_increments")));
+    displacement_problem.restore_solver_choice(checkpoint.counters);
     restore_output_records(checkpoint);
 
     pcout << "Resuming from the checkpoint in " << folder << ": step "

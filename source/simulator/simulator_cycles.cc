@@ -31,6 +31,7 @@ namespace VPContact
 
     statistics = Statistics();
     displacement_problem.reset_linear_iterations();
+    displacement_problem.restore_solver_choice({});
     verification.restore_running_maxima({}); // each cycle's summary is its own
   }
 

@@ -40,17 +40,37 @@ namespace VPContact
 
     /**
      * With Linear solver = automatic: the method for a displacement system
-     * of @p n_unknowns in @p dim dimensions on @p n_ranks processes (on every
-     * new mesh, before initialize()); else nothing.
+     * of @p n_unknowns in @p dim dimensions on @p n_ranks processes over a
+     * run of @p n_steps steps (SolverChoice; on every new mesh, before
+     * initialize()); else nothing.
      */
     void
     choose(const types::global_dof_index n_unknowns,
            const unsigned int            dim,
-           const unsigned int            n_ranks);
+           const unsigned int            n_ranks,
+           const unsigned int            n_steps);
 
-    /// The largest system that the automatic choice factorizes.
-    static types::global_dof_index
-    factorization_limit(const unsigned int dim, const unsigned int n_ranks);
+    /**
+     * With Linear solver = automatic and a factorization chosen for the
+     * run's steps: count the factorization anew that a change of the stick
+     * set at step @p step asks for, and once they come more often than the
+     * steps repay (SolverChoice::refactorizations_outweigh()), take CG with
+     * AMG for the rest of the run. Returns whether it switched; the caller
+     * then initializes the solver with the rigid motions.
+     */
+    bool
+    switch_after_refactorization(const unsigned int step);
+
+    /// The state of the automatic choice that a checkpoint keeps: the
+    /// factorizations anew so far and whether the run switched to AMG.
+    std::pair<unsigned int, bool>
+    choice_state() const;
+
+    /// Set that state, after choose() on the mesh of a resumed run; with
+    /// @p switched the method is CG with AMG from here on.
+    void
+    restore_choice_state(const unsigned int n_refactorizations,
+                         const bool         switched);
 
     /// The method for the header, and why where it was chosen.
     std::string
@@ -235,8 +255,15 @@ namespace VPContact
     LinearAlgebra linear_algebra = LinearAlgebra::trilinos;
     SpdMethod     method         = SpdMethod::cg_amg;
     /// Linear solver = automatic, and why choose() took the method.
-    bool                       automatic = false;
-    std::string                reason;
+    bool        automatic = false;
+    std::string reason;
+    /// The automatic choice's refactorization count: whether it may switch
+    /// to AMG, after how many steps per factorization, the count so far
+    /// and whether it switched (kept through the meshes of a run).
+    bool                       may_switch         = false;
+    double                     steps_needed       = 0;
+    unsigned int               n_refactorizations = 0;
+    bool                       switched           = false;
     double                     relative_tolerance = 1e-10;
     bool                       loose              = false;
     unsigned int               max_iterations     = 1000;

@@ -28,6 +28,7 @@
 #include <array>
 #include <functional>
 #include <future>
+#include <map>
 #include <memory>
 #include <string>
 #include <thread>
@@ -252,6 +253,13 @@ namespace VPContact
     /// @p time and the predictor's count of increments.
     void
     resume_at(const double time, const unsigned int n_recorded);
+    /// The predictor's count of increments and the automatic solver
+    /// choice's state, as checkpoint counters.
+    std::map<std::string, double>
+    checkpoint_counters() const;
+    /// That state from a checkpoint's counters (none: a new run's).
+    void
+    restore_solver_choice(const std::map<std::string, double> &counters);
 
     /// The linear solver's iterations in the last step.
     unsigned int
@@ -346,6 +354,9 @@ namespace VPContact
     share_increment();
     bool
     friction_sets_settled(const double time, const unsigned int iteration);
+    /// Before a factorization anew for a changed stick set at @p time.
+    void
+    note_refactorization(const double time);
     /// Whether the solves of a friction iteration may stop at the square
     /// root of the tolerance while the sets change.
     bool
