@@ -59,7 +59,7 @@ namespace VPContact
     //   scene), S*(10^5) = 7.15, p = 0.07;
     // - 2D, several processes: 21 and 49 there, 17.5 and 0.62;
     // - 3D, 1 process: 8 at 14,739 to 65 at 206,763 (the paper scene, 16^3
-    //   to 40^3 cells), 18 to 122 on the blocks with a hole (4,170 to
+    //   to 40^3 cells), 11 to 122 on the blocks with a hole (4,170 to
     //   204,816), 45.8 and 0.60;
     // - 3D, several processes: 24 at 14,739 to 278 at 206,763, 148 and
     //   0.93.
