@@ -225,7 +225,7 @@ def launch(a, command, ranks, tag, finished, timeout=None, environment=()):
     peaks = [int(k) / 1024 for f in glob.glob(rss + ".*") for k in
              re.findall(r"Maximum resident set size \(kbytes\): (\d+)",
                         open(f).read())]
-    return out, dict(status=status, process_wall_s=wall, log=log,
+    return out, dict(status=status, exit_code=rc, process_wall_s=wall, log=log,
                           mem_all_mb=sum(peaks) if peaks else "")
 
 

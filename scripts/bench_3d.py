@@ -100,7 +100,15 @@ def partial(a, row, folder):
     """A run stopped by --timeout: its time per step, iterations and size
     from the steps it finished (statistics.csv), no phases."""
     steps = [r for r in step_rows(folder) if r.get("wall_time")]
-    if not steps or not a.timeout:
+    # timeout(1) exits with 124 after its SIGTERM, 137 after the SIGKILL
+    # that follows; any other exit is a failure of the run itself.
+    if not a.timeout or row.get("exit_code") not in (124, 137):
+        return row
+    if not steps:
+        # Stopped inside its first step: what is known is that a step takes
+        # longer than the whole time allowed, which the report says.
+        row.update(status=f"stopped after 0 of {a.steps} steps "
+                   f"(--timeout {a.timeout} s)")
         return row
     row.update(status=f"stopped after {len(steps)} of {a.steps} steps "
                f"(--timeout {a.timeout} s)",
@@ -149,6 +157,11 @@ def main():
     if os.path.exists(a.csv):
         with open(a.csv) as f:
             rows += [r for r in csv.DictReader(f) if r["scene"] not in a.scenes]
+    # One scene's rows together and the scenes in a fixed order, so that the
+    # report reads the same whichever scenes this sitting ran.
+    order = list(SCENES)
+    rows.sort(key=lambda r: order.index(r["scene"]) if r["scene"] in order
+              else len(order))
     with open(a.csv, "w", newline="") as f:
         w = csv.DictWriter(f, COLUMNS, extrasaction="ignore")
         w.writeheader()

@@ -66,27 +66,42 @@ def scene_3d(csv_path):
             f"| {r.get('scene') or 'paper'}"
             f"{' (stopped)' if r in stopped else ''} | {r['commit']} | "
             f"{r['cells_per_side']} | "
-            f"{r['ranks']} | {r['dofs']} | "
+            f"{r['ranks']} | {r['dofs'] or '–'} | "
             f"{fmt(r['total_s'])} | {fmt(r['per_step_ms'])} | " +
             " | ".join(fmt(r.get(p + "_ms")) for p, _ in PHASE_TITLES) +
             f" | {fmt(r['linear_its'])} | {fmt(r['active_set_its'])} | "
             f"{fmt(r['mem_rank0_mb'])} | {fmt(r['mem_all_mb'])} |")
-    for r in rows:
-        if r["commit"] == m["commit"] or r["status"] != "ok":
-            continue
-        head = next((h for h in rows if h["commit"] == m["commit"]
-                     and h["status"] == "ok" and h["scene"] == r["scene"]
-                     and h["ranks"] == r["ranks"]), None)
-        if head:
-            lines += ["", f"*{r['scene']}, {r['ranks']} ranks, "
-                      f"{m['commit']} against {r['commit']}*: time per step "
-                      f"{fmt(head['per_step_ms'])} / {fmt(r['per_step_ms'])} "
-                      f"ms = {float(head['per_step_ms']) / float(r['per_step_ms']):.3g}, "
-                      f"peak memory over the ranks {fmt(head['mem_all_mb'])} / "
-                      f"{fmt(r['mem_all_mb'])} MB = "
-                      f"{float(head['mem_all_mb']) / float(r['mem_all_mb']):.3g}."]
+    lines += comparisons(rows)
     for r in stopped:
-        lines += ["", f"*{r.get('scene')} (stopped)*: {r['status']}; its "
-                  "time per step is the mean wall time of the steps it "
-                  "finished (statistics.csv), without the split by phase."]
+        lines += ["", f"*{r.get('scene')}, {r['commit']} (stopped)*: "
+                  f"{r['status']}; " + (
+                      "its time per step is the mean wall time of the steps "
+                      "it finished (statistics.csv), without the split by "
+                      "phase." if r.get("per_step_ms") else
+                      "its first step took longer than the time allowed, so "
+                      "it has no figures.")]
+    return lines
+
+
+def comparisons(rows):
+    """A line per row of an earlier commit (--against) that finished, with
+    its time per step and memory against the first row of the same scene
+    and ranks, which ran the commit measured (bench_3d writes that one
+    first in each scene)."""
+    lines = []
+    heads = {}
+    for r in rows:
+        key = (r.get("scene") or "paper", r["ranks"])
+        head = heads.setdefault(key, r)
+        if head is r or r["commit"] == head["commit"]:
+            continue
+        if r["status"] != "ok" or head["status"] != "ok":
+            continue
+        lines += ["", f"*{key[0]}, {r['ranks']} ranks, "
+                  f"{head['commit']} against {r['commit']}*: time per step "
+                  f"{fmt(head['per_step_ms'])} / {fmt(r['per_step_ms'])} "
+                  f"ms = {float(head['per_step_ms']) / float(r['per_step_ms']):.3g}, "
+                  f"peak memory over the ranks {fmt(head['mem_all_mb'])} / "
+                  f"{fmt(r['mem_all_mb'])} MB = "
+                  f"{float(head['mem_all_mb']) / float(r['mem_all_mb']):.3g}."]
     return lines
