@@ -89,6 +89,22 @@ def start_memory(best, mine, peer, size):
             f"the peer's {fmt(peer['mem_all_mb'] - p)} MB. ")
 
 
+def work_shares(algebras, get):
+    """The busiest rank's share of the damage solves' work (free nodes
+    times CG iterations) in the 2-rank AMG runs, and what that leaves of
+    the ranks' gain, from the run's own summary line
+    (DamageProblem::balance_summary()), where the runs printed it."""
+    found = []
+    for a in algebras:
+        r = get("vpcontact", a, "CG with AMG", 2)
+        balance = r and r.get("damage_work_balance")
+        if balance:
+            found.append(f"{a}: {100 * float(balance) / 2:.0f} % of the "
+                         f"work on one rank, so at most "
+                         f"{2 / float(balance):.3g} times one rank's speed")
+    return " (" + "; ".join(found) + ")" if found else ""
+
+
 def goals(best, sizes, algebras, every=None):
     """The performance goals of the project on the largest mesh against the
     figures reached, and what stands in the way where a goal is missed.
@@ -275,8 +291,8 @@ def goals(best, sizes, algebras, every=None):
          each(lambda a1, a2: fmt(ratio(damage(a1), damage(a2))))
          + by_ranks(lambda a1, a2: ratio(damage(a1), damage(a2))),
          "The damage solves work on the free nodes only, which lie around "
-         "the loaded corner, mostly on one rank: that rank does two thirds "
-         "of the work while the other waits in the reductions. The "
+         "the loaded corner, mostly on one rank, while the other waits in "
+         "the reductions" + work_shares(algebras, get) + ". The "
          "preconditioner is block Jacobi between the ranks, and the first "
          "solve of each step, whose change is smooth over the whole free "
          "region, needs more than twice the iterations of one rank's; the "

@@ -414,6 +414,33 @@ namespace VPContact
 
 
   template <int dim>
+  std::string
+  DamageProblem<dim>::balance_summary() const
+  {
+    // The solves' reductions make every rank wait for the busiest one, so
+    // their time follows the largest work, not the mean: on p ranks they
+    // run at most p * mean / largest times as fast as on one rank of the
+    // same speed. The damage lies where the body is strained most, often
+    // on few of the ranks that the mesh's partition gives equal cells.
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const auto         work
+      = Utilities::MPI::min_max_avg(system.solve_work(), communicator);
+    if (n_ranks < 2 || !(work.max > 0.))
+      return "";
+    std::ostringstream text;
+    text << "Damage solves, free nodes times CG iterations per rank: largest "
+         << printf_text("%.3e", work.max) << " on rank " << work.max_index
+         << ", mean " << printf_text("%.3e", work.avg) << " (largest / mean "
+         << printf_text("%.3g", work.max / work.avg) << "): on these "
+         << n_ranks << " ranks they can run at most "
+         << printf_text("%.3g", work.sum / work.max)
+         << " times as fast as on one\n";
+    return text.str();
+  }
+
+
+
+  template <int dim>
   std::optional<ScalarNodeSpace<dim>>
   DamageProblem<dim>::node_space() const
   {

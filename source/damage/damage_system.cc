@@ -480,10 +480,15 @@ namespace VPContact
     SolverControl control(max_iterations, tolerance * b_norm);
     try
       {
-        if (use_region_solver)
-          return region_solver.solve(b, x, held, tolerance, max_iterations);
-        Assert(solver, ExcMessage("initialize_preconditioner() first."));
-        return solver->solve(x, b, control, held);
+        Assert(use_region_solver || solver,
+               ExcMessage("initialize_preconditioner() first."));
+        const unsigned int iterations
+          = (use_region_solver ?
+               region_solver.solve(b, x, held, tolerance, max_iterations) :
+               solver->solve(x, b, control, held));
+        work_of_solves
+          += double(compact_owned.n_elements() - held.size()) * iterations;
+        return iterations;
       }
     catch (const SolverControl::NoConvergence &e)
       {
@@ -495,6 +500,15 @@ namespace VPContact
                              max_iterations);
       }
     return 0;
+  }
+
+
+
+  template <int dim>
+  double
+  DamageSystem<dim>::solve_work() const
+  {
+    return work_of_solves;
   }
 
 
@@ -519,7 +533,10 @@ namespace VPContact
     Assert(solves_on_free_nodes(), ExcInternalError());
     try
       {
-        return region_solver.solve_free(b, x, free, tolerance, max_iterations);
+        const unsigned int iterations
+          = region_solver.solve_free(b, x, free, tolerance, max_iterations);
+        work_of_solves += double(free.size()) * iterations;
+        return iterations;
       }
     catch (const SolverControl::NoConvergence &e)
       {

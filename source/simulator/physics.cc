@@ -82,6 +82,15 @@ namespace VPContact
 
 
   template <int dim>
+  std::string
+  Physics<dim>::balance_summary() const
+  {
+    return "";
+  }
+
+
+
+  template <int dim>
   void
   Physics<dim>::read_transferred_state(
     const LA::MPI::Vector                            &sets_owned,

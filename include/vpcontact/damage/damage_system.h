@@ -191,6 +191,17 @@ namespace VPContact
                const double                     tolerance,
                const unsigned int               max_iterations);
 
+    /**
+     * The work of this rank's damage solves in this process so far: the sum
+     * over the solves of solve() and solve_free() of the rank's free nodes
+     * times the solve's CG iterations. Each iteration costs about as much
+     * per free node, so the largest of these over the ranks against their
+     * mean says how much the ranks lose by waiting for the busiest one in
+     * the solves' reductions.
+     */
+    double
+    solve_work() const;
+
     /// Whether Solver/Damage obstacle solver = SNES VI: the bounds are then
     /// found by solve_obstacle() instead of the caller's active set.
     bool
@@ -262,6 +273,8 @@ namespace VPContact
       = DamageRegionSolver::Preconditioner::diagonal;
     DamageRegionSolver region_solver;
     SupportProduct     support_product;
+    /// See solve_work().
+    double work_of_solves = 0.;
     /// Solver/Damage obstacle solver = SNES VI, and its solver.
     bool                                use_snes_vi = false;
     std::unique_ptr<DamageObstacleSnes> obstacle_snes;
