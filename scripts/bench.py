@@ -270,16 +270,24 @@ def program_run(a, size, algebra, solver, ranks, program, tag):
     dofs = re.search(r"mesh: \d+ cells, (\d+) dofs", out)
     memory = re.search(r"Peak memory \(rank 0\):\s+(\d+) kB", out)
     floor_m = re.search(r"one displacement solve takes ([0-9.e+-]+) s", out)
-    # On several ranks: the damage solves' largest work per rank against
-    # the mean (DamageProblem::balance_summary()).
+    # The damage solves' work (free nodes times CG iterations), summed over
+    # the ranks, and on several ranks the largest per rank against the mean
+    # (DamageProblem::work_summary()).
+    work = re.search(r"Damage solves, free nodes times CG iterations: "
+                     r"([0-9.e+-]+)", out)
     balance = re.search(r"Damage solves, free nodes times CG iterations per "
-                        r"rank: .*\(largest / mean ([0-9.e+-]+)\)", out)
+                        r"rank: .*, mean ([0-9.e+-]+) \(largest / mean "
+                        r"([0-9.e+-]+)\)", out)
+    if balance:
+        row["damage_work"] = float(balance.group(1)) * ranks
+    elif work:
+        row["damage_work"] = float(work.group(1))
     row.update(dofs=int(dofs.group(1)) if dofs else "",
                total_s=total, setup_s=setup,
                per_step_ms=1000 * (total - setup) / a.steps,
                mem_rank0_mb=int(memory.group(1)) / 1024 if memory else "",
                floor_ms=1000 * float(floor_m.group(1)) if floor_m else "",
-               damage_work_balance=float(balance.group(1)) if balance
+               damage_work_balance=float(balance.group(2)) if balance
                else "",
                phases=";".join(f"{n}={c}x{s:.6g}"
                                for n, (c, s, _) in sorted(phases.items())))

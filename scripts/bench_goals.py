@@ -91,18 +91,30 @@ def start_memory(best, mine, peer, size):
 
 def work_shares(algebras, get):
     """The busiest rank's share of the damage solves' work (free nodes
-    times CG iterations) in the 2-rank AMG runs, and what that leaves of
-    the ranks' gain, from the run's own summary line
-    (DamageProblem::balance_summary()), where the runs printed it."""
+    times CG iterations) in the 2-rank AMG runs, what that leaves of the
+    ranks' gain, and the work on 2 ranks against 1, from the runs' own
+    summary lines (DamageProblem::work_summary()), where they printed
+    them."""
     found = []
     for a in algebras:
-        r = get("vpcontact", a, "CG with AMG", 2)
-        balance = r and r.get("damage_work_balance")
-        if balance:
-            found.append(f"{a}: {100 * float(balance) / 2:.0f} % of the "
-                         f"work on one rank, so at most "
-                         f"{2 / float(balance):.3g} times one rank's speed")
-    return " (" + "; ".join(found) + ")" if found else ""
+        r1 = get("vpcontact", a, "CG with AMG", 1)
+        r2 = get("vpcontact", a, "CG with AMG", 2)
+        balance = r2 and r2.get("damage_work_balance")
+        if not balance:
+            continue
+        text = (f"with {a}, {100 * float(balance) / 2:.0f} % of the work "
+                f"lies on one rank, which leaves at most "
+                f"{2 / float(balance):.3g} times one rank's speed")
+        if r1 and r1.get("damage_work") and r2.get("damage_work"):
+            # The busiest rank's work against all of 1 rank's.
+            more = float(r2["damage_work"]) / float(r1["damage_work"])
+            text += (f", and the 2 ranks together do {more:.3g} times the "
+                     "work of 1, the iterations that block Jacobi between "
+                     "them adds, which leaves at most "
+                     f"{2 / (more * float(balance)):.3g} times")
+        found.append(text)
+    return (". Measured by the runs themselves (free nodes times CG "
+            "iterations): " + "; ".join(found)) if found else ""
 
 
 def goals(best, sizes, algebras, every=None):

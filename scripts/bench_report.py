@@ -32,7 +32,7 @@ COLUMNS = (["round", "size", "steps", "code", "algebra", "solver", "path",
             "ranks", "status", "dofs", "total_s", "setup_s", "per_step_ms"]
            + [p + "_ms" for p in PHASES]
            + ["damage_solve_min_ms", "damage_solve_max_ms",
-              "damage_work_balance", "mem_rank0_mb",
+              "damage_work", "damage_work_balance", "mem_rank0_mb",
               "mem_all_mb", "process_wall_s", "linear_its", "active_set_its",
               "floor_ms", "phases", "log"] + MACHINE)
 

@@ -415,7 +415,7 @@ namespace VPContact
 
   template <int dim>
   std::string
-  DamageProblem<dim>::balance_summary() const
+  DamageProblem<dim>::work_summary() const
   {
     // The solves' reductions make every rank wait for the busiest one, so
     // their time follows the largest work, not the mean: on p ranks they
@@ -425,9 +425,17 @@ namespace VPContact
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
     const auto         work
       = Utilities::MPI::min_max_avg(system.solve_work(), communicator);
-    if (n_ranks < 2 || !(work.max > 0.))
+    if (!(work.max > 0.))
       return "";
     std::ostringstream text;
+    // On one rank the sum alone: against it, the sum on several ranks
+    // shows the iterations that block Jacobi between the ranks adds.
+    if (n_ranks == 1)
+      {
+        text << "Damage solves, free nodes times CG iterations: "
+             << printf_text("%.3e", work.sum) << "\n";
+        return text.str();
+      }
     text << "Damage solves, free nodes times CG iterations per rank: largest "
          << printf_text("%.3e", work.max) << " on rank " << work.max_index
          << ", mean " << printf_text("%.3e", work.avg) << " (largest / mean "

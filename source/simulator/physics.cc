@@ -83,7 +83,7 @@ namespace VPContact
 
   template <int dim>
   std::string
-  Physics<dim>::balance_summary() const
+  Physics<dim>::work_summary() const
   {
     return "";
   }

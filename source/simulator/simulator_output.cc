@@ -337,11 +337,9 @@ namespace VPContact
         // On several ranks, each phase's time on the slowest and the
         // fastest rank: how evenly the work is spread.
         if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
-          {
-            computing_timer.print_wall_time_statistics(mpi_communicator);
-            for (const Physics<dim> *object : physics)
-              pcout << object->balance_summary();
-          }
+          computing_timer.print_wall_time_statistics(mpi_communicator);
+        for (const Physics<dim> *object : physics)
+          pcout << object->work_summary();
         // Peak resident memory of this rank (VmHWM), for the benchmarks.
         std::ifstream status("/proc/self/status");
         for (std::string line; std::getline(status, line);)

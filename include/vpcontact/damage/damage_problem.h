@@ -120,10 +120,11 @@ namespace VPContact
     std::string
     violation_summary() const override;
 
-    /// The damage solves' work per rank (DamageSystem::solve_work()), the
-    /// largest against the mean, and what that leaves of the ranks' gain.
+    /// The damage solves' work (DamageSystem::solve_work()); on several
+    /// ranks the largest against the mean, and what that leaves of the
+    /// ranks' gain.
     std::string
-    balance_summary() const override;
+    work_summary() const override;
 
     /// {"damage"}: zeta's name in the output fields.
     std::vector<std::string>

@@ -127,11 +127,11 @@ namespace VPContact
     virtual std::string
     violation_summary() const = 0;
 
-    /// On several ranks, the line of the run's summary that says how
-    /// evenly the object's own solves spread their work over the ranks,
-    /// with its newline, or "" (the default). A collective call.
+    /// The line of the run's summary that says how much work the object's
+    /// own solves did and, on several ranks, how evenly they spread it over
+    /// the ranks, with its newline, or "" (the default). A collective call.
     virtual std::string
-    balance_summary() const;
+    work_summary() const;
 
     /// The object's sets into its degrees of freedom of @p sets_owned, and
     /// the counters a resumed run needs into @p counters.
