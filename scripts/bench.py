@@ -18,16 +18,14 @@ import shutil
 import statistics
 import subprocess
 import sys
-import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import bench_against  # noqa: E402  (next to this file)
 import bench_report  # noqa: E402
+from bench_process import ENV, run_retrying  # noqa: E402
 
 PYTHON = "/usr/bin/python3"  # Debian's interpreter, the one with dolfinx
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-           OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
 def arguments():
@@ -117,41 +115,6 @@ def parameters(executable):
     return entries
 
 
-def binary_stamp(executable):
-    """Modification times of the binary and its library: a change during a
-    run means it was relinked under it."""
-    files = [executable, os.path.join(os.path.dirname(executable),
-                                      "libvpcontact_lib.so")]
-    return tuple(os.stat(f).st_mtime if os.path.exists(f) else None
-                 for f in files)
-
-
-def run_retrying(command, executable=None, attempts=6):
-    """Runs a command; (stdout, stderr, return code, wall seconds). A failure
-    that looks like the binary being relinked (it changed or vanished, the
-    loader could not start it) is retried after a minute: the program is
-    rebuilt while benchmarks run."""
-    executable = executable or command[0]
-    for attempt in range(attempts):
-        before = binary_stamp(executable)
-        start = time.perf_counter()
-        try:
-            p = subprocess.run(command, capture_output=True, text=True, env=ENV)
-            out, err, rc = p.stdout, p.stderr, p.returncode
-        except OSError as e:  # binary missing or busy
-            out, err, rc = "", str(e), 127
-        wall = time.perf_counter() - start
-        relinked = (rc in (126, 127) or before != binary_stamp(executable)
-                    or before[0] is None or re.search(
-                        r"error while loading shared libraries|Text file busy|"
-                        r"cannot open shared object|Exec format error", err))
-        if rc == 0 or not relinked or attempt == attempts - 1:
-            return out, err, rc, wall
-        print("  the binary changed or could not start; retrying in 60 s",
-              flush=True)
-        time.sleep(60)
-
-
 # Phases of the TimerOutput table, grouped for the report: first matching
 # pattern (case-insensitive) wins; "Setup" (mesh, dofs, sparsity, once per
 # run) is out of the time per step. The same groups hold the timers of an
@@ -189,10 +152,11 @@ def timer_table(out):
 def launch(a, command, ranks, tag, finished, timeout=None, environment=()):
     """Runs a command under /usr/bin/time -v (for the peak memory of each
     process), under mpirun for several ranks, and keeps its output in the
-    log folder; (stdout, the row's status, wall time, peak memory summed
-    over the ranks, log). With @p timeout (seconds) the run gets SIGTERM
-    then, which vpcontact answers by stopping after its step. The
-    @p environment entries (NAME=VALUE) are set for the command alone."""
+    log folder; (stdout, the row's status, wall time, peak resident set
+    summed over the ranks, log, peak private memory summed over the ranks,
+    bench_process.py). With @p timeout (seconds) the run gets SIGTERM then,
+    which vpcontact answers by stopping after its step. The @p environment
+    entries (NAME=VALUE) are set for the command alone."""
     executable = command[0]
     if environment:
         command = ["env"] + list(environment) + command
@@ -211,7 +175,8 @@ def launch(a, command, ranks, tag, finished, timeout=None, environment=()):
                    + command)
     if timeout:
         command = ["timeout", "-s", "TERM", "-k", "60", str(timeout)] + command
-    out, err, rc, wall = run_retrying(command, executable)
+    private = {}
+    out, err, rc, wall = run_retrying(command, executable, private=private)
     log = os.path.join(a.workdir, "logs", tag + ".log")
     with open(log, "w") as f:
         f.write(" ".join(command) + "\n" + out + "\n--- stderr ---\n" + err)
@@ -226,7 +191,8 @@ def launch(a, command, ranks, tag, finished, timeout=None, environment=()):
              re.findall(r"Maximum resident set size \(kbytes\): (\d+)",
                         open(f).read())]
     return out, dict(status=status, exit_code=rc, process_wall_s=wall, log=log,
-                          mem_all_mb=sum(peaks) if peaks else "")
+                     mem_all_mb=sum(peaks) if peaks else "",
+                     mem_private_mb=private.get("mb", ""))
 
 
 def program_run(a, size, algebra, solver, ranks, program, tag):
@@ -366,10 +332,12 @@ def start_memory(a, head, peer_runs):
             1, "start_peer", lambda out: os.path.exists(summary))
         for f in glob.glob(os.path.splitext(summary)[0] + ".*"):
             os.remove(f)
-    return {"start_mem_vpcontact_mb": mine["mem_all_mb"]
-            if mine["status"] == "ok" else "",
-            "start_mem_peer_mb": theirs.get("mem_all_mb", "")
-            if theirs.get("status") == "ok" else ""}
+    ok = [mine["status"] == "ok", theirs.get("status") == "ok"]
+    return {"start_mem_vpcontact_mb": mine["mem_all_mb"] if ok[0] else "",
+            "start_mem_peer_mb": theirs["mem_all_mb"] if ok[1] else "",
+            "start_private_vpcontact_mb":
+                mine["mem_private_mb"] if ok[0] else "",
+            "start_private_peer_mb": theirs["mem_private_mb"] if ok[1] else ""}
 
 
 def machine():

@@ -27,13 +27,14 @@ PHASE_TITLES = [("assembly", "assembly"),
 # hash of the scene file that commit's binary read.
 MACHINE = ["date", "cpu", "cores", "memory_gb", "os", "dealii", "petsc",
            "dolfinx", "commit", "head", "scene", "thp",
-           "start_mem_vpcontact_mb", "start_mem_peer_mb"]
+           "start_mem_vpcontact_mb", "start_mem_peer_mb",
+           "start_private_vpcontact_mb", "start_private_peer_mb"]
 COLUMNS = (["round", "size", "steps", "code", "algebra", "solver", "path",
             "ranks", "status", "dofs", "total_s", "setup_s", "per_step_ms"]
            + [p + "_ms" for p in PHASES]
            + ["damage_solve_min_ms", "damage_solve_max_ms",
               "damage_work", "damage_work_balance", "mem_rank0_mb",
-              "mem_all_mb", "process_wall_s", "linear_its", "active_set_its",
+              "mem_all_mb", "mem_private_mb", "process_wall_s", "linear_its", "active_set_its",
               "floor_ms", "phases", "log"] + MACHINE)
 
 
@@ -205,8 +206,9 @@ def damage(r):
 def cost_table(best):
     lines = ["| cells | ranks | run | dofs | total [s] | per step [ms] | " +
              " | ".join(t for _, t in PHASE_TITLES) +
-             " | memory rank 0 [MB] | memory all ranks [MB] |",
-             "|" + "---|" * (8 + len(PHASE_TITLES))]
+             " | memory rank 0 [MB] | memory all ranks [MB] | private "
+             "memory all ranks [MB] |",
+             "|" + "---|" * (9 + len(PHASE_TITLES))]
     for (size, k), r in sorted(best.items(), key=lambda i: (
             i[0][0], i[0][1][3], order(i[1]))):
         cells = [fmt(r.get(p + "_ms")) for p, _ in PHASE_TITLES]
@@ -217,66 +219,8 @@ def cost_table(best):
         lines.append(f"| {size}² | {k[3]} | {name(r)} | {r['dofs']} | "
                      f"{fmt(r['total_s'])} | {fmt(r['per_step_ms'])} | " +
                      " | ".join(cells) + f" | {fmt(r.get('mem_rank0_mb', ''))}"
-                     f" | {fmt(r.get('mem_all_mb', ''))} |")
-    return lines
-
-
-def ratio_table(best, sizes, algebras):
-    lines = ["| cells | vpcontact back-end | best serial: vpcontact / peer | "
-             "AMG 1 rank / peer GAMG 1 rank | AMG 2 ranks / peer GAMG 2 "
-             "ranks | peak memory, AMG 1 rank: vpcontact / peer | peak "
-             "memory, AMG 2 ranks: vpcontact / peer | vpcontact AMG "
-             "speed-up 1 → 2 ranks | its damage solves 1 → 2 ranks | peer "
-             "GAMG speed-up 1 → 2 ranks |", "|" + "---|" * 10]
-    peer = "DOLFINx/PETSc"
-    for size in sizes:
-        def get(code, algebra, solver, ranks):
-            return best.get((size, (code, algebra, solver, ranks)))
-        serial_peer = [r for (s, k), r in best.items()
-                       if s == size and k[0] == "peer" and k[3] == 1]
-        best_peer = min(serial_peer, key=lambda r: r["total_s"], default=None)
-        g1, g2 = get("peer", peer, "gamg", 1), get("peer", peer, "gamg", 2)
-        for algebra in algebras:
-            serial = [r for (s, k), r in best.items() if s == size and
-                      k[0] == "vpcontact" and k[1] == algebra and k[3] == 1]
-            if not serial:
-                continue
-            fastest = min(serial, key=lambda r: r["total_s"])
-            a1 = get("vpcontact", algebra, "CG with AMG", 1)
-            a2 = get("vpcontact", algebra, "CG with AMG", 2)
-            memory = [fmt(ratio(a["mem_all_mb"], g["mem_all_mb"]))
-                      if a and g else "–" for a, g in ((a1, g1), (a2, g2))]
-            lines.append(
-                f"| {size}² | {algebra} | {pair(fastest, best_peer)}"
-                + (f": {short(fastest)} / {short(best_peer)}" if best_peer
-                   else "") + " | "
-                f"{pair(a1, g1)} | {pair(a2, g2)} | {memory[0]} | {memory[1]}"
-                f" | {pair(a1, a2)} | "
-                f"{fmt(ratio(damage(a1), damage(a2))) if a1 and a2 else '–'}"
-                f" | {pair(g1, g2)} |")
-    return lines
-
-
-def growth_table(best, sizes):
-    """Time per step growth per 4x unknowns, (t_b / t_a)^(ln 4 / ln(n_b /
-    n_a)): 4 where the cost grows like the unknowns."""
-    pairs = list(zip(sizes, sizes[1:]))
-    if len(sizes) > 2:
-        pairs.append((sizes[0], sizes[-1]))
-    lines = ["| run | ranks | " + " | ".join(
-        f"{a}² → {b}²" for a, b in pairs) + " |",
-        "|---|---|" + "---|" * len(pairs)]
-    any_run = {k: r for (_, k), r in best.items()}
-    keys = sorted(any_run, key=lambda k: (order(any_run[k]), k[3]))
-    for k in keys:
-        cells = []
-        for a, b in pairs:
-            ra, rb = best.get((a, k)), best.get((b, k))
-            cells.append(fmt((rb["per_step_ms"] / ra["per_step_ms"]) ** (
-                math.log(4) / math.log(rb["dofs"] / ra["dofs"])))
-                if ra and rb else "–")
-        lines.append(f"| {name(any_run[k])} | {k[3]} | " + " | ".join(cells)
-                     + " |")
+                     f" | {fmt(r.get('mem_all_mb', ''))}"
+                     f" | {fmt(r.get('mem_private_mb', ''))} |")
     return lines
 
 
@@ -433,7 +377,12 @@ def introduction(m, rows, csv_link):
         "split less finely: its *assembly* is all its assembly, its *other* "
         "holds the stress update. *memory*: peak resident set, rank 0 "
         "as vpcontact prints it, and summed over the ranks from "
-        "`/usr/bin/time -v`.",
+        "`/usr/bin/time -v`. *private memory*: the peak of the ranks' "
+        "anonymous memory (heap, stacks, anonymous maps) summed over them, "
+        "sampled every 0.1 s from `/proc` (`scripts/bench_process.py`): "
+        "the resident set without the pages mapped from files, the "
+        "libraries' code and symbol tables among them, which the page cache "
+        "holds once for every process of the machine that maps them.",
         f"* Each run is the median of {rounds} rounds by total time"
         + (" (of an even number, the slower of the middle two)."
            if rounds % 2 == 0 else ".") if rounds > 1 else
@@ -517,6 +466,7 @@ def regenerating(rows, csv_link):
 def head_sections(best, sizes, algebras):
     """The sections on HEAD's runs alone: which solver to pick, the ratios
     against the peer, the growth with the mesh and the shares of a step."""
+    import bench_tables  # noqa: E402  (it imports this module)
     return [
         "## Which to pick", "",
     ] + advice(best, sizes) + [
@@ -527,12 +477,13 @@ def head_sections(best, sizes, algebras):
         "meshes finer than those above and for more ranks.", "",
         "## Against the peer", "",
         "Ratios of wall time, total (per step in brackets); below 1 "
-        "vpcontact takes less. Memory: summed over the ranks.", "",
-    ] + ratio_table(best, sizes, algebras) + [
+        "vpcontact takes less. Memory: peak resident set summed over the "
+        "ranks; in brackets the same of the private memory.", "",
+    ] + bench_tables.ratio_table(best, sizes, algebras) + [
         "", "## Growth with the mesh", "",
         "Factor by which the time per step grows per 4x unknowns "
         "(4 where it grows like the unknowns).", "",
-    ] + growth_table(best, sizes) + [
+    ] + bench_tables.growth_table(best, sizes) + [
         "", f"## Where the time goes at {max(sizes)}²", "",
         "Shares of a step. The displacement solve of CG with AMG is a "
         "number of AMG cycles over the whole displacement block, each "
