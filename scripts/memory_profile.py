@@ -21,6 +21,7 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import bench  # noqa: E402  (next to this file)
+import mapped_pages  # noqa: E402
 
 MB = 1e6
 
@@ -122,7 +123,7 @@ def table(counter, total, limit):
     return "\n".join(rows)
 
 
-def page(a, own, library, over_time, peak_rss):
+def page(a, own, library, over_time, peak_rss, mapped):
     when, later = over_time
     info = bench.machine()
     total = peak = sum(own.values())
@@ -161,6 +162,19 @@ coarse solver).
 
 {table(library, solver, 8) if solver else "(none: this solver builds no ML hierarchy)"}
 
+## The pages mapped from files
+
+The resident set counts, beside the heap and the stacks, the pages of the
+files the run maps: the code and read-only data of the program's libraries
+and their dynamic symbol tables, which the loader reads while it resolves
+the symbols a library exports and uses (deal.II's library exports its
+template instances, so its table of names is large). The page cache holds
+them once for every process of the machine that maps them, all ranks of a
+run included, and can drop them and read them again; they are not memory
+the run holds of its own. `scripts/bench` reports, beside the peak resident
+set, the peak of the anonymous memory alone (*private memory*).
+
+{mapped}
 ## Regenerating
 
 `scripts/memory_profile [--cells N] [--steps S] [--solver NAME] [--out PAGE]`
@@ -188,12 +202,15 @@ def main():
         plain = os.path.join(workdir, "plain.prm")
         with open(plain, "w") as f:
             f.write(scene(a, os.path.join(workdir, "output_plain")))
-        plain = subprocess.run([a.vpcontact, plain], capture_output=True,
-                               text=True).stdout
+        # The same run without heaptrack, for its resident set and the
+        # pages it maps from files.
+        output = os.path.join(workdir, "plain.out")
+        mapped = mapped_pages.page_section([a.vpcontact, plain], output)
+        plain = open(output).read()
         rss = re.search(r"Peak memory \(rank 0\):\s*(\d+) kB", plain)
         peak_rss = f"{int(rss.group(1)) / 1000:.0f} MB" if rss else "not printed"
     with open(a.out, "w") as f:
-        f.write(page(a, own, library, over_time, peak_rss))
+        f.write(page(a, own, library, over_time, peak_rss, mapped))
     print(f"memory_profile: wrote {a.out}")
 
 
