@@ -33,8 +33,8 @@ SCENES = {"paper": ("paper_fig1_3d.prm", 64),
           "slip": ("paper_fig1_3d_slip.prm", 72)}
 COLUMNS = ["scene", "cells_per_side", "ranks", "steps", "status", "dofs", "total_s",
            "setup_s", "per_step_ms"] + [p + "_ms" for p in bench.PHASES] + [
-           "mem_rank0_mb", "mem_all_mb", "linear_its", "active_set_its",
-           "phases", "date", "cpu", "commit"]
+           "mem_rank0_mb", "mem_all_mb", "mem_private_mb", "linear_its",
+           "active_set_its", "phases", "date", "cpu", "commit"]
 
 
 def run(a, scene, ranks, executable, label=""):

@@ -59,8 +59,8 @@ def scene_3d(csv_path):
         "| scene | commit | N | ranks | dofs | total [s] | per step [ms] | " +
         " | ".join(t for _, t in PHASE_TITLES) +
         " | CG its per step | AS its per step | memory rank 0 [MB] | "
-        "memory all ranks [MB] |",
-        "|" + "---|" * (11 + len(PHASE_TITLES))]
+        "memory all ranks [MB] | private memory all ranks [MB] |",
+        "|" + "---|" * (12 + len(PHASE_TITLES))]
     for r in rows:
         lines.append(
             f"| {r.get('scene') or 'paper'}"
@@ -70,7 +70,8 @@ def scene_3d(csv_path):
             f"{fmt(r['total_s'])} | {fmt(r['per_step_ms'])} | " +
             " | ".join(fmt(r.get(p + "_ms")) for p, _ in PHASE_TITLES) +
             f" | {fmt(r['linear_its'])} | {fmt(r['active_set_its'])} | "
-            f"{fmt(r['mem_rank0_mb'])} | {fmt(r['mem_all_mb'])} |")
+            f"{fmt(r['mem_rank0_mb'])} | {fmt(r['mem_all_mb'])} | "
+            f"{fmt(r.get('mem_private_mb', ''))} |")
     lines += comparisons(rows)
     for r in stopped:
         lines += ["", f"*{r.get('scene')}, {r['commit']} (stopped)*: "
