@@ -12,6 +12,7 @@ shortly before the run ends (file pages are mapped as the code runs and
 seldom dropped, so the last reading holds nearly all of them), and reports
 them."""
 import collections
+import os
 import re
 import struct
 import subprocess
@@ -116,7 +117,7 @@ def page_section(command, output):
     total = sum(files.values())
     rows = ["| file | MB resident |", "|---|---|"]
     for path, kb in files.most_common(8):
-        rows.append(f"| `{path}` | {kb / 1024:.1f} |")
+        rows.append(f"| `{os.path.basename(path)}` | {kb / 1024:.1f} |")
     rows.append(f"| the other {len(files) - 8} files | "
                 f"{(total - sum(k for _, k in files.most_common(8))) / 1024:.1f}"
                 " |")
@@ -127,7 +128,8 @@ def page_section(command, output):
                      f"{kb / 1024:.1f} |")
     return (f"Resident pages mapped from files near the end of the run: "
             f"{total / 1024:.0f} MB from {len(files)} files.\n\n"
-            + "\n".join(rows) + f"\n\nThose of `{largest}` by ELF section "
+            + "\n".join(rows) + f"\n\nThose of `{os.path.basename(largest)}` "
+            "by ELF section "
             "(`.dynstr` and `.dynsym`: the names and entries of its exported "
             "symbols; `.rela.*`: its relocations; `.text`: its code):\n\n"
             + "\n".join(split) + "\n")
