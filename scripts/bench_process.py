@@ -20,16 +20,17 @@ ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
            OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
-def children(pid):
-    """The pids of the processes whose parent is @p pid."""
-    found = []
+def children_by_parent():
+    """{parent pid: [child pids]} of every process, from one pass over
+    /proc."""
+    found = {}
     for entry in os.listdir("/proc"):
         if entry.isdigit():
             try:
                 with open(f"/proc/{entry}/stat") as f:
                     # The name in brackets may hold spaces: split after it.
-                    if int(f.read().rsplit(")", 1)[1].split()[1]) == pid:
-                        found.append(int(entry))
+                    parent = int(f.read().rsplit(")", 1)[1].split()[1])
+                found.setdefault(parent, []).append(int(entry))
             except (OSError, IndexError, ValueError):
                 pass  # gone meanwhile
     return found
@@ -80,17 +81,18 @@ class PeakPrivateMemory:
         self.thread.join()
 
     def processes(self):
+        children = children_by_parent()
         tree, stack = [], [self.root]
         while stack:
             pid = stack.pop()
             tree.append(pid)
-            stack += children(pid)
+            stack += children.get(pid, [])
         return [p for p in tree if name_of(p) == self.name]
 
     def sample(self):
         # The tree is looked up again every tenth sample only (and while no
         # process of the name is found): listing /proc costs more than
-        # reading the rollups of the few processes found.
+        # reading the counters of the few processes found.
         found, count = [], 0
         while not self.done.is_set():
             if not found or count % 10 == 0:
