@@ -99,8 +99,9 @@ def start_memory(best, mine, peer, size):
         f"in vpcontact and {fmt(pp)} MB in the peer; the rest are pages "
         "mapped from the libraries' files (their code, and the dynamic "
         "symbol tables the loader reads when it resolves a library's "
-        "symbols, of which deal.II's are the largest), which the page "
-        "cache holds once for all processes that map them. The private "
+        "symbols, of which deal.II's are the largest: [memory.md](memory.md) "
+        "lists them), which the page cache holds once for all processes "
+        "that map them. The private "
         f"memory at the peak, {fmt(mp)} MB against the peer's {fmt(gp)} "
         f"MB ({fmt(mp / gp)} times), is what the run holds of its own. ")
 
