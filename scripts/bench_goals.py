@@ -112,14 +112,14 @@ def work_shares(algebras, get):
     ranks' gain, and the work on 2 ranks against 1, from the runs' own
     summary lines (DamageProblem::work_summary()), where they printed
     them."""
-    found = []
+    found = {}
     for a in algebras:
         r1 = get("vpcontact", a, "CG with AMG", 1)
         r2 = get("vpcontact", a, "CG with AMG", 2)
         balance = r2 and r2.get("damage_work_balance")
         if not balance:
             continue
-        text = (f"with {a}, {100 * float(balance) / 2:.0f} % of the work "
+        text = (f"{100 * float(balance) / 2:.0f} % of the work "
                 f"lies on one rank, which leaves at most "
                 f"{2 / float(balance):.3g} times one rank's speed")
         if r1 and r1.get("damage_work") and r2.get("damage_work"):
@@ -129,9 +129,14 @@ def work_shares(algebras, get):
                      "work of 1, the iterations that block Jacobi between "
                      "them adds, which leaves at most "
                      f"{2 / (more * float(balance)):.3g} times")
-        found.append(text)
+        found.setdefault(text, []).append(a)
+    # Both packages run the program's own region solver for the damage, so
+    # their figures are often the same: said once for both.
     return (". Measured by the runs themselves (free nodes times CG "
-            "iterations): " + "; ".join(found)) if found else ""
+            "iterations): " + "; ".join(
+                f"with {' and '.join(packages)}"
+                + (" alike" if len(packages) > 1 else "") + f", {text}"
+                for text, packages in found.items())) if found else ""
 
 
 def goals(best, sizes, algebras, every=None):

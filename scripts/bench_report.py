@@ -436,12 +436,18 @@ def runs_not_in_tables(rows):
     return ["", "## Runs not in the tables", ""] + notes if notes else []
 
 
-def regenerating(rows, csv_link):
-    """The section *Regenerating*: the command and its options."""
+def regenerating(rows, csv_link, out, csv_path):
+    """The section *Regenerating*: the command and its options. A page
+    other than doc/performance.md (another machine's) names its own --out
+    and --csv, so that the command rewrites it rather than that page."""
     minutes = sum(r.get("process_wall_s") or 0 for r in rows) / 60
+    command = "scripts/bench [SIZES]"
+    if os.path.abspath(out) != os.path.join(ROOT, "doc", "performance.md"):
+        command += "".join(f" --{o} {os.path.relpath(os.path.abspath(p), ROOT)}"
+                           for o, p in (("out", out), ("csv", csv_path)))
     return [
         "", "## Regenerating", "",
-        "`scripts/bench [SIZES]` (default 128 256 512) runs everything "
+        f"`{command}` (sizes by default 128 256 512) runs everything "
         f"(this set took {fmt(minutes)} minutes) and rewrites this page and "
         f"`{csv_link}`. Options: `--steps N` (default 100), `--rounds R`, "
         "`--no-peer`, `--out FILE` (the page; the CSV goes to "
@@ -528,7 +534,8 @@ def write_report(out, csv_path, rows):
         + bench_setup_report.setup_scaling(csv_path)
         + bench_solvers_report.solver_choice(csv_path)
         + adaptive_run_report.adaptation_cost(csv_path))
-    text += runs_not_in_tables(rows) + regenerating(rows, csv_link)
+    text += runs_not_in_tables(rows) + regenerating(rows, csv_link, out,
+                                                    csv_path)
     with open(out, "w") as f:
         f.write("\n".join(text) + "\n")
     # The decisions of the rule on own kernels go into the design page
