@@ -22,6 +22,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import bench_against  # noqa: E402  (next to this file)
+import openblas_core  # noqa: E402
 import bench_report  # noqa: E402
 from bench_process import ENV, run_retrying  # noqa: E402
 
@@ -368,7 +369,7 @@ def machine():
         thp = ""
     return dict(
         date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"), cpu=cpu,
-        thp=thp,
+        thp=thp, blas=openblas_core.core(),
         cores=os.cpu_count(), memory_gb=round(memory / 2**20, 1), os=osname,
         dealii=version(package + ["libdeal.ii-dev"]),
         petsc=version(package + ["libpetsc-real-dev"]),

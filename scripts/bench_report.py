@@ -26,7 +26,7 @@ PHASE_TITLES = [("assembly", "assembly"),
 # head: the tree the benchmark ran from, the same in every row; scene: a
 # hash of the scene file that commit's binary read.
 MACHINE = ["date", "cpu", "cores", "memory_gb", "os", "dealii", "petsc",
-           "dolfinx", "commit", "head", "scene", "thp",
+           "dolfinx", "commit", "head", "scene", "thp", "blas",
            "start_mem_vpcontact_mb", "start_mem_peer_mb",
            "start_private_vpcontact_mb", "start_private_peer_mb"]
 COLUMNS = (["round", "size", "steps", "code", "algebra", "solver", "path",
@@ -36,6 +36,19 @@ COLUMNS = (["round", "size", "steps", "code", "algebra", "solver", "path",
               "damage_work", "damage_work_balance", "mem_rank0_mb",
               "mem_all_mb", "mem_private_mb", "process_wall_s", "linear_its", "active_set_its",
               "floor_ms", "phases", "log"] + MACHINE)
+
+
+def blas_line(m):
+    """Where the runs had OpenBLAS's generic kernels: what that costs and
+    how to choose others (openblas_core.py)."""
+    if (m.get("blas") or "").lower() != "prescott":
+        return []
+    return ["* OpenBLAS did not know this CPU and ran its generic Prescott "
+            "(SSE3) kernels, in vpcontact and in the peer alike: their dense "
+            "products, the factorizations of Cholesky and MUMPS, are several "
+            "times slower than those of the kernels for the CPU's vector "
+            "instructions, which `OPENBLAS_CORETYPE` chooses (README, "
+            "*Running a scene*; `scripts/openblas_core.py` tells)."]
 
 
 def huge_page_line(m):
@@ -341,7 +354,10 @@ def introduction(m, rows, csv_link):
         "## Machine and runs", "",
         f"* {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB, {m['os']}; "
         f"deal.II {m['dealii']}, PETSc {m['petsc'] or '–'}, DOLFINx "
-        f"{m['dolfinx'] or '–'}; vpcontact at commit {head(m)}"
+        f"{m['dolfinx'] or '–'}"
+        + (f"; OpenBLAS with its {m['blas']} kernels" if m.get("blas")
+           else "")
+        + f"; vpcontact at commit {head(m)}"
         + settings_of_head(rows)
         + "".join(f" and at {c}" for c in sorted(
             {r["commit"] for r in rows
@@ -364,7 +380,7 @@ def introduction(m, rows, csv_link):
         "* Peer: `peer.py --solver lu` (MUMPS LU, factorized once) and "
         "`--solver gamg` (CG + PETSc GAMG), after a warm-up run that "
         "compiles its forms.",
-    ] + huge_page_line(m) + [
+    ] + blas_line(m) + huge_page_line(m) + [
         "* *total*: the run's own clock from start to end (vpcontact's "
         "timer table, the peer's `t_total`). *per step*: (total − mesh and "
         "dof set-up) / steps, split by phase in ms per step (rank 0's "
