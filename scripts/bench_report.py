@@ -45,9 +45,10 @@ def blas_line(m):
         return []
     return ["* OpenBLAS did not know this CPU and ran its generic Prescott "
             "(SSE3) kernels, in vpcontact and in the peer alike: their dense "
-            "products, the factorizations of Cholesky and MUMPS, are several "
-            "times slower than those of the kernels for the CPU's vector "
-            "instructions, which `OPENBLAS_CORETYPE` chooses (README, "
+            "products are several times slower than those of the kernels for "
+            "the CPU's vector instructions, and the factorizations and "
+            "substitutions of Cholesky and MUMPS take longer with them. "
+            "`OPENBLAS_CORETYPE` chooses the kernels (README, "
             "*Running a scene*; `scripts/openblas_core.py` tells)."]
 
 

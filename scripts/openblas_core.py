@@ -1,8 +1,8 @@
 """Which kernels OpenBLAS runs on this machine, and a hint where it chose
 generic ones on a CPU that has better: an OpenBLAS older than the CPU does
 not know its model and falls back to its Prescott (SSE3) kernels, whose
-dense products (the factorizations of Cholesky and MUMPS) are several times
-slower than its AVX2 or AVX-512 ones. OPENBLAS_CORETYPE chooses the kernels
+dense products (most of the work of the factorizations of Cholesky and
+MUMPS) are several times slower than its AVX2 or AVX-512 ones. OPENBLAS_CORETYPE chooses the kernels
 when the library loads.
 
     openblas_core.py          prints the kernels' name and the hint, if any
@@ -45,8 +45,9 @@ def hint(name=None):
     return (f"OpenBLAS does not know this CPU and runs its generic Prescott "
             f"kernels, although the CPU has the vector instructions of its "
             f"{better} kernels: set OPENBLAS_CORETYPE={better} in the "
-            f"environment of the runs (the factorizations of Cholesky and "
-            f"MUMPS are dense products, several times faster so).")
+            f"environment of the runs (the dense products of the "
+            f"factorizations of Cholesky and MUMPS run several times faster "
+            f"so, the factorizations and substitutions faster).")
 
 
 if __name__ == "__main__":
