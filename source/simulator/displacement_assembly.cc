@@ -16,7 +16,19 @@ namespace VPContact
   {
     // The element matrix (E eps(phi_j), eps(phi_i)) of the cell that
     // @p fe_values was last reinitialized on, for its displacement shape
-    // functions @p shape.
+    // functions @p shape. Each of them is primitive (one nonzero vector
+    // component a, with gradient g): eps(phi_i) is the symmetric part of
+    // e_a (x) g_i, and with the symmetries of E
+    //
+    //   (E eps(phi_j)) : eps(phi_i) = sum_{c,d} E_{a c b d} g_i[c] g_j[d]
+    //
+    // for the components a of phi_i and b of phi_j, as step-8 writes it for
+    // the isotropic law. Per point, the sums over c for each phi_i come
+    // first (the row W_i[b][d], dim^3 products), then each entry is a dot
+    // product of dim terms; building the symmetric gradients and
+    // contracting them with E entry by entry costs about twice the
+    // products and most of the time of a 3D matrix assembly, which a
+    // change of the stick set repeats.
     template <int dim>
     void
     elastic_cell_matrix(const FEValues<dim>             &fe_values,
@@ -24,20 +36,42 @@ namespace VPContact
                         const SymmetricTensor<4, dim>   &E,
                         FullMatrix<double>              &cell_matrix)
     {
-      const FEValuesExtractors::Vector     u(0);
-      const unsigned int                   n = shape.size();
-      std::vector<SymmetricTensor<2, dim>> eps_phi(n);
+      const FiniteElement<dim> &fe = fe_values.get_fe();
+      const unsigned int        n  = shape.size();
+      std::vector<unsigned int> component(n);
+      for (unsigned int i = 0; i < n; ++i)
+        component[i] = fe.system_to_component_index(shape[i]).first;
+      // E's entries in a plain array: SymmetricTensor's accessors look up
+      // the stored entry of each index quadruple.
+      double stiffness[dim][dim][dim][dim];
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int b = 0; b < dim; ++b)
+            for (unsigned int d = 0; d < dim; ++d)
+              stiffness[a][c][b][d] = E[a][c][b][d];
+      std::vector<Tensor<1, dim>> gradient(n);
+      std::vector<Tensor<2, dim>> weighted_row(n);
       cell_matrix.reinit(n, n);
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
-          for (unsigned int i = 0; i < n; ++i)
-            eps_phi[i] = fe_values[u].symmetric_gradient(shape[i], q);
+          const double JxW = fe_values.JxW(q);
           for (unsigned int i = 0; i < n; ++i)
             {
-              const SymmetricTensor<2, dim> E_eps_i = E * eps_phi[i];
-              for (unsigned int j = 0; j <= i; ++j)
-                cell_matrix(i, j) += (E_eps_i * eps_phi[j]) * fe_values.JxW(q);
+              gradient[i]          = fe_values.shape_grad(shape[i], q);
+              const unsigned int a = component[i];
+              Tensor<2, dim>    &W = weighted_row[i];
+              for (unsigned int b = 0; b < dim; ++b)
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    double sum = 0.;
+                    for (unsigned int c = 0; c < dim; ++c)
+                      sum += stiffness[a][c][b][d] * gradient[i][c];
+                    W[b][d] = sum * JxW;
+                  }
             }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j <= i; ++j)
+              cell_matrix(i, j) += weighted_row[i][component[j]] * gradient[j];
         }
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int j = i + 1; j < n; ++j)
