@@ -10,6 +10,9 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <Epetra_CrsMatrix.h>
+#include <string>
+
 namespace VPContact
 {
   namespace
@@ -80,6 +83,58 @@ namespace VPContact
 
 
 
+    // Add the matrix of a cell none of whose degrees of freedom is
+    // constrained and all of whose rows this rank owns (nearly every cell)
+    // to @p matrix, and return true; return false, having added nothing,
+    // for any other cell. The same values go to the same entries, cell by
+    // cell in the same order, as distribute_local_to_global() adds them,
+    // but into Epetra's local rows and columns directly: that path sorts
+    // the cell's indices, looks up their constraints, and converts the
+    // column of every entry to Epetra's local numbering (576 lookups for a
+    // 3D cell, against 48 here): a large part of the time of an assembly,
+    // which each change of the stick set repeats.
+    bool
+    add_plain_cell_matrix(
+      const FullMatrix<double>                   &cell_matrix,
+      const std::vector<types::global_dof_index> &dof_indices,
+      const AffineConstraints<double>            &constraints,
+      const IndexSet                             &owned,
+      LA::SparseMatrix                           &matrix,
+      std::vector<int>                           &local_rows,
+      std::vector<int>                           &local_columns)
+    {
+      for (const auto dof : dof_indices)
+        if (!owned.is_element(dof) || constraints.is_constrained(dof))
+          return false;
+      // deal.II gives only const access to the Epetra matrix; its values
+      // change here, its structure does not.
+      auto &epetra = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
+      const unsigned int n = dof_indices.size();
+      local_rows.resize(n);
+      local_columns.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const int dof    = static_cast<int>(dof_indices[i]);
+          local_rows[i]    = epetra.RowMap().LID(dof);
+          local_columns[i] = epetra.ColMap().LID(dof);
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const int error = epetra.SumIntoMyValues(local_rows[i],
+                                                   n,
+                                                   &cell_matrix(i, 0),
+                                                   local_columns.data());
+          AssertThrow(error == 0,
+                      ExcMessage("Epetra could not add a cell's matrix (error "
+                                 + std::to_string(error)
+                                 + "): the sparsity pattern lacks a coupling "
+                                   "of the cell's degrees of freedom."));
+        }
+      return true;
+    }
+
+
+
     // Add what a cell computed for the right-hand side (a
     // DisplacementProblem::CellRhs) to @p rhs: a plain cell's entries straight
     // to the local storage, at the position of each degree of freedom in the
@@ -132,6 +187,7 @@ namespace VPContact
                             update_gradients | update_JxW_values);
     FullMatrix<double>                   cell_matrix;
     std::vector<types::global_dof_index> dof_indices;
+    std::vector<int>                     local_rows, local_columns;
 
     displacement.matrix = 0.;
     for (const auto &cell : owned_cells)
@@ -142,9 +198,16 @@ namespace VPContact
                             material.stiffness(),
                             cell_matrix);
         get_displacement_dof_indices(cell, dof_indices);
-        constraints.distribute_local_to_global(cell_matrix,
-                                               dof_indices,
-                                               displacement.matrix);
+        if (!add_plain_cell_matrix(cell_matrix,
+                                   dof_indices,
+                                   constraints,
+                                   displacement.owned,
+                                   displacement.matrix,
+                                   local_rows,
+                                   local_columns))
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 dof_indices,
+                                                 displacement.matrix);
       }
     if (friction_problem)
       friction_problem->add_slip_stiffness(constraints, displacement.matrix);
