@@ -315,6 +315,15 @@ namespace VPContact
 
 
   template <int dim>
+  unsigned int
+  FrictionProblem<dim>::n_slip_nodes() const
+  {
+    return active_set.count().second;
+  }
+
+
+
+  template <int dim>
   double
   FrictionProblem<dim>::max_bound() const
   {

@@ -127,6 +127,10 @@ namespace VPContact
     unsigned int
     n_stick_nodes() const;
 
+    /// The number of slip nodes (all ranks).
+    unsigned int
+    n_slip_nodes() const;
+
     /// The largest friction bound at the contact nodes in this step (all
     /// ranks).
     double

@@ -361,6 +361,10 @@ namespace VPContact
     /// root of the tolerance while the sets change.
     bool
     may_solve_loosely() const;
+    /// Whether the first solve of a step will turn slip directions, so
+    /// that more solves follow it in any case.
+    bool
+    first_solve_turns_directions() const;
 
     /// Stop if the active set cycles or does not settle in the entries'
     /// number of iterations.
@@ -582,6 +586,9 @@ namespace VPContact
     /// Whether the CG solves after a change of the friction sets may stop
     /// early in this step (see may_solve_loosely()).
     bool may_loosen = false;
+    /// Whether this step's first solve stops early too (see
+    /// first_solve_turns_directions()).
+    bool loose_first = false;
   };
 } // namespace VPContact
 
