@@ -396,8 +396,8 @@ def missing(program, algebra, solver):
 def config_name(code, algebra, solver, ranks):
     """What --configs matches: 'vpcontact Trilinos Cholesky, 1 rank',
     'peer gamg, 2 ranks'."""
-    return (f"{code} {algebra + ' ' if code == 'vpcontact' else ''}{solver}"
-            f", {ranks} rank{'s' * (ranks > 1)}")
+    return bench_report.config_name({"code": code, "algebra": algebra,
+                                     "solver": solver, "ranks": ranks})
 
 
 def plan(a, programs):

@@ -381,7 +381,7 @@ def introduction(m, rows, csv_link):
         "* Peer: `peer.py --solver lu` (MUMPS LU, factorized once) and "
         "`--solver gamg` (CG + PETSc GAMG), after a warm-up run that "
         "compiles its forms.",
-    ] + blas_line(m) + huge_page_line(m) + [
+    ] + partial_line(rows) + blas_line(m) + huge_page_line(m) + [
         "* *total*: the run's own clock from start to end (vpcontact's "
         "timer table, the peer's `t_total`). *per step*: (total − mesh and "
         "dof set-up) / steps, split by phase in ms per step (rank 0's "
@@ -406,6 +406,17 @@ def introduction(m, rows, csv_link):
         "* One round: the machine's speed can drift by tens of per cent "
         "between runs; `--rounds 3` reports medians.",
     ] + spread_line(rows) + [""]
+
+
+def partial_line(rows):
+    """For a run of part of the configurations (--configs), which ran."""
+    head_rows = [r for r in rows if is_head(r)]
+    names = sorted({config_name(r) for r in head_rows})
+    if len(names) >= ALL_CONFIGS:
+        return []
+    return ["* Only these configurations ran (`--configs`): "
+            + "; ".join(names) + ". Which solver to pick and the goals "
+            "that need the others are left out."]
 
 
 def spread_line(rows):
@@ -453,19 +464,64 @@ def runs_not_in_tables(rows):
     return ["", "## Runs not in the tables", ""] + notes if notes else []
 
 
+# What a run without --configs runs: vpcontact's four paths with either
+# package and the peer's three (scripts/bench.py's plan()).
+ALL_CONFIGS = 11
+
+
+def config_name(r):
+    """The name by which scripts/bench's --configs selects the run of
+    @p r, as in 'vpcontact Trilinos Cholesky, 1 rank', 'peer gamg, 2
+    ranks'."""
+    algebra = r["algebra"] + " " if r["code"] == "vpcontact" else ""
+    ranks = int(r["ranks"])
+    return f"{r['code']} {algebra}{r['solver']}, {ranks} rank{'s' * (ranks > 1)}"
+
+
+def run_options(rows):
+    """The options of scripts/bench that ran @p rows: the sizes and the
+    rounds where they are not the default, and for a part of the
+    configurations (--configs, --one-thread, --huge-pages) the names of
+    those that ran, so that the command on the page runs the same set
+    again. An --against commit runs what it offers of that set."""
+    def names(selected):
+        return "|".join(sorted({config_name(r) for r in selected}))
+
+    sizes = sorted({int(r["size"]) for r in rows})
+    options = (" [SIZES]" if sizes == [128, 256, 512] else
+               "".join(f" {n}" for n in sizes))
+    rounds = max(int(r.get("round") or 1) for r in rows)
+    if rounds > 1:
+        options += f" --rounds {rounds}"
+    head = [r for r in rows if str(r.get("commit")) == str(r.get("head"))]
+    if len({config_name(r) for r in head}) < ALL_CONFIGS:
+        options += f" --configs '{names(head)}'"
+    for commit in sorted({str(r.get("commit")) for r in rows} -
+                         {str(r.get("head")) for r in rows}):
+        selected = [r for r in rows if str(r.get("commit")) == commit]
+        which = names(selected)
+        if commit.endswith(ONE_THREAD):
+            options += f" --one-thread '{which}'"
+        elif commit.endswith(" huge pages"):
+            options += f" --huge-pages '{which}'"
+        else:
+            options += f" --against {commit}"
+    return options
+
+
 def regenerating(rows, csv_link, out, csv_path):
     """The section *Regenerating*: the command and its options. A page
     other than doc/performance.md (another machine's) names its own --out
     and --csv, so that the command rewrites it rather than that page."""
     minutes = sum(r.get("process_wall_s") or 0 for r in rows) / 60
-    command = "scripts/bench [SIZES]"
+    command = "scripts/bench" + run_options(rows)
     if os.path.abspath(out) != os.path.join(ROOT, "doc", "performance.md"):
         command += "".join(f" --{o} {os.path.relpath(os.path.abspath(p), ROOT)}"
                            for o, p in (("out", out), ("csv", csv_path)))
     return [
         "", "## Regenerating", "",
-        f"`{command}` (sizes by default 128 256 512) runs everything "
-        f"(this set took {fmt(minutes)} minutes) and rewrites this page and "
+        f"`{command}` runs this set again (it took {fmt(minutes)} minutes; "
+        "without sizes, 128 256 512) and rewrites this page and "
         f"`{csv_link}`. Options: `--steps N` (default 100), `--rounds R`, "
         "`--no-peer`, `--out FILE` (the page; the CSV goes to "
         "figures/bench.csv beside it), `--quick` (16² and 32², 10 steps, "
@@ -490,23 +546,29 @@ def head_sections(best, sizes, algebras):
     """The sections on HEAD's runs alone: which solver to pick, the ratios
     against the peer, the growth with the mesh and the shares of a step."""
     import bench_tables  # noqa: E402  (it imports this module)
-    return [
+    # A run of part of the configurations (--configs) cannot say which to
+    # pick, nor one size how the time grows.
+    every_path = len({k for _, k in best}) >= ALL_CONFIGS
+    pick = [
         "## Which to pick", "",
     ] + advice(best, sizes) + [
         "* `Cholesky` runs on one process only; `MUMPS` is the direct "
         "solver on several ranks. Both factorize once per stick set and "
         "reuse the factors in every step.",
         "* `CG with AMG` stores no factors; it is the solver meant for "
-        "meshes finer than those above and for more ranks.", "",
+        "meshes finer than those above and for more ranks.", ""]
+    growth = [
+        "", "## Growth with the mesh", "",
+        "Factor by which the time per step grows per 4x unknowns "
+        "(4 where it grows like the unknowns).", "",
+    ] + bench_tables.growth_table(best, sizes)
+    return (pick if every_path else []) + [
         "## Against the peer", "",
         "Ratios of wall time, total (per step in brackets); below 1 "
         "vpcontact takes less. Memory: peak resident set summed over the "
         "ranks; in brackets the same of the private memory.", "",
-    ] + bench_tables.ratio_table(best, sizes, algebras) + [
-        "", "## Growth with the mesh", "",
-        "Factor by which the time per step grows per 4x unknowns "
-        "(4 where it grows like the unknowns).", "",
-    ] + bench_tables.growth_table(best, sizes) + [
+    ] + bench_tables.ratio_table(best, sizes, algebras) + (
+        growth if len(sizes) > 1 else []) + [
         "", f"## Where the time goes at {max(sizes)}²", "",
         "Shares of a step. The displacement solve of CG with AMG is a "
         "number of AMG cycles over the whole displacement block, each "
