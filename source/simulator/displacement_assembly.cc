@@ -1,5 +1,6 @@
 // The displacement problem's assembly: the elastic stiffness matrix (once per
 // mesh) and the right-hand side of a step, which carries the stress history.
+#include <vpcontact/fe/cell_translation.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/simulator/displacement_problem.h>
 
@@ -189,14 +190,25 @@ namespace VPContact
     std::vector<types::global_dof_index> dof_indices;
     std::vector<int>                     local_rows, local_columns;
 
-    displacement.matrix = 0.;
+    // The mapping is linear and the material the same in every cell, so a
+    // cell that is the last computed one moved (is_translate()) has its
+    // matrix: on a subdivided box one matrix serves every cell of the
+    // rank, where computing them was most of an assembly, which every
+    // change of the stick set repeats. The cells come in the same order
+    // in a run resumed from a checkpoint, which so computes the same bits.
+    const cell_iterator *reference = nullptr;
+    displacement.matrix            = 0.;
     for (const auto &cell : owned_cells)
       {
-        fe_values.reinit(cell);
-        elastic_cell_matrix(fe_values,
-                            displacement.shape_functions,
-                            material.stiffness(),
-                            cell_matrix);
+        if (reference == nullptr || !is_translate(cell, *reference))
+          {
+            fe_values.reinit(cell);
+            elastic_cell_matrix(fe_values,
+                                displacement.shape_functions,
+                                material.stiffness(),
+                                cell_matrix);
+            reference = &cell;
+          }
         get_displacement_dof_indices(cell, dof_indices);
         if (!add_plain_cell_matrix(cell_matrix,
                                    dof_indices,
