@@ -2,6 +2,7 @@
 // locally owned cell, computed once per mesh, and the strains, damage and
 // stress work evaluated from them.
 #include <vpcontact/fe/cell_kinematics.h>
+#include <vpcontact/fe/cell_translation.h>
 #include <vpcontact/fe/fixed_size_cell_kernels.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 
@@ -71,14 +72,17 @@ namespace VPContact
 
     // The shape gradients of a cell depend only on its shape: the cells
     // that are translates of one another (every cell of a box, the cells of
-    // one size of a refined box) have the same gradients to the bit, since
-    // FEValues reuses the last cell's values for a translate. Each distinct
-    // block of gradients is stored once, and a cell keeps the index of its
-    // own: in 3D this saves 1.5 kB a cell on such meshes (400 MB at 64^3
-    // cells), and the passes over the cells read one block from the cache
-    // instead of a block per cell from memory. Blocks are found by a hash of
-    // their bytes and compared in full, so a cell never takes another
-    // cell's gradients unless they are the same bits.
+    // one size of a refined box) have the same gradients. A cell that is
+    // the last computed one moved (is_translate()) takes that cell's block;
+    // FEValues reuses a translate's values only where deal.II runs one
+    // thread, and computed anew at another place they can differ in the
+    // last bits. Each distinct block of gradients is stored once, and a
+    // cell keeps the index of its own: in 3D this saves 1.5 kB a cell on
+    // such meshes (400 MB at 64^3 cells), and the passes over the cells
+    // read one block from the cache instead of a block per cell from
+    // memory. The other blocks are found by a hash of their bytes and
+    // compared in full, so that a cell takes another cell's gradients only
+    // where they are the same bits.
     template <int dim>
     class GradientBlocks
     {
@@ -150,7 +154,17 @@ namespace VPContact
     positions.assign(n_cells * dofs_per_cell, 0);
     layout = std::make_unique<Epetra_BlockMap>(ghosted.trilinos_vector().Map());
     equal_layouts.clear();
+    store_cells(dof_handler, quadrature);
+    collect_displacement_nodes(dof_handler);
+  }
 
+
+
+  template <int dim>
+  void
+  CellKinematics<dim>::store_cells(const DoFHandler<dim> &dof_handler,
+                                   const Quadrature<dim> &quadrature)
+  {
     // The scalar element on the cells of the triangulation: only the
     // geometry is asked for, so no DoFHandler of its own is needed.
     FEValues<dim>                        fe_values(get_default_linear_mapping(
@@ -161,24 +175,31 @@ namespace VPContact
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     GradientBlocks              blocks(n_q_points * n_nodes, gradients);
     std::vector<Tensor<1, dim>> block(n_q_points * n_nodes);
+    cell_iterator               reference;
+    bool                        has_reference = false;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const unsigned int c = cell->active_cell_index();
           fe_values.reinit(typename Triangulation<dim>::cell_iterator(cell));
           for (unsigned int q = 0; q < n_q_points; ++q)
+            points[c * n_q_points + q] = fe_values.quadrature_point(q);
+          if (has_reference && is_translate(cell, reference))
+            gradient_block[c] = gradient_block[reference->active_cell_index()];
+          else
             {
-              points[c * n_q_points + q] = fe_values.quadrature_point(q);
-              for (unsigned int a = 0; a < n_nodes; ++a)
-                block[q * n_nodes + a] = fe_values.shape_grad(a, q);
+              for (unsigned int q = 0; q < n_q_points; ++q)
+                for (unsigned int a = 0; a < n_nodes; ++a)
+                  block[q * n_nodes + a] = fe_values.shape_grad(a, q);
+              gradient_block[c] = blocks.index_of(block);
+              reference         = cell;
+              has_reference     = true;
             }
-          gradient_block[c] = blocks.index_of(block);
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             positions[c * dofs_per_cell + i]
               = local_position(*layout, dof_indices[i]);
         }
-    collect_displacement_nodes(dof_handler);
   }
 
 

@@ -162,6 +162,14 @@ namespace VPContact
       return cell_gradients(cell->active_cell_index());
     }
 
+    /// The number of distinct blocks of shape gradients stored: one for
+    /// each shape of cell (one for all cells of a box).
+    unsigned int
+    n_gradient_blocks() const
+    {
+      return gradients.size() / (std::size_t(n_q_points) * n_nodes);
+    }
+
     /// Quadrature point @p q of @p cell in real space.
     const Point<dim> &
     point(const cell_iterator &cell, const unsigned int q) const
@@ -211,6 +219,13 @@ namespace VPContact
     std::vector<unsigned int> positions;
     /// See displacement_node_positions().
     std::vector<unsigned int> node_positions;
+
+    /// Fill points, gradients, gradient_block and positions for the
+    /// locally owned cells of @p dof_handler at the points of
+    /// @p quadrature.
+    void
+    store_cells(const DoFHandler<dim> &dof_handler,
+                const Quadrature<dim> &quadrature);
 
     /// Fill node_positions from the positions of the cells.
     void
