@@ -322,6 +322,8 @@ namespace VPContact
   LinearSolver::matrix_changed()
   {
     changed_since_initialize = true;
+    if (solver)
+      solver->values_changed();
   }
 
 

@@ -3,6 +3,7 @@
 #include <vpcontact/input/input_error.h>
 #include <vpcontact/linear_algebra/free_rows_system.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/row_pattern_matrix.h>
 #include <vpcontact/linear_algebra/spd_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -62,6 +63,7 @@ namespace VPContact
       {
         this->matrix = &matrix;
         preconditioner.reset();
+        row_patterns.reset();
         direct.reset();
         free_rows.clear();
         if (method == SpdMethod::cg_amg)
@@ -101,12 +103,12 @@ namespace VPContact
         SolverCG<LA::MPI::Vector> cg(control);
         if (!Utilities::MPI::logical_or(!held.empty(),
                                         matrix->get_mpi_communicator()))
-          cg.solve(*matrix, x, b, *preconditioner);
+          cg.solve(product(), x, b, *preconditioner);
         else if (method == SpdMethod::cg_incomplete_cholesky)
           solve_on_free_rows(x, b, cg, held);
         else
           cg.solve(masked([this](auto       &dst,
-                                 const auto &src) { matrix->vmult(dst, src); },
+                                 const auto &src) { vmult(dst, src); },
                           held),
                    x,
                    b,
@@ -125,6 +127,13 @@ namespace VPContact
           direct->solve(dst, src);
       }
 
+      void
+      values_changed() override
+      {
+        if (row_patterns)
+          row_patterns->update();
+      }
+
       bool
       is_direct() const override
       {
@@ -133,6 +142,34 @@ namespace VPContact
       }
 
     private:
+      /// y = K x, from the rows' patterns where the matrix has them.
+      void
+      vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const
+      {
+        if (row_patterns)
+          row_patterns->vmult(dst, src);
+        else
+          matrix->vmult(dst, src);
+      }
+
+      /// K for deal.II's CG: vmult() above.
+      struct Product
+      {
+        const TrilinosSpdSolver &solver;
+
+        void
+        vmult(LA::MPI::Vector &dst, const LA::MPI::Vector &src) const
+        {
+          solver.vmult(dst, src);
+        }
+      };
+
+      Product
+      product() const
+      {
+        return Product{*this};
+      }
+
       /**
        * CG on K_FF, the free rows' submatrix, preconditioned by IC(0) of
        * K_FF itself. Both are built again only when the free set changes;
@@ -209,13 +246,28 @@ namespace VPContact
             parameters.set("null space: dimension", static_cast<int>(n_modes));
             parameters.set("null space: vectors", null_space->Values());
           }
+        // ML reads the matrix's rows to build its levels and takes the
+        // finest level's products from the matrix it is given: from the
+        // rows' patterns (RowPatternMatrix), the same bits for a fraction
+        // of the memory traffic, where the rows repeat.
         auto amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-        amg->initialize(matrix.trilinos_matrix(), parameters);
+        row_patterns
+          = std::make_unique<RowPatternMatrix>(matrix.trilinos_matrix());
+        if (row_patterns->compressed())
+          amg->initialize(*row_patterns, parameters);
+        else
+          {
+            row_patterns.reset();
+            amg->initialize(matrix.trilinos_matrix(), parameters);
+          }
         preconditioner = std::move(amg);
       }
 
-      const SpdMethod                                     method;
-      const LA::SparseMatrix                             *matrix = nullptr;
+      const SpdMethod         method;
+      const LA::SparseMatrix *matrix = nullptr;
+      /// The products of matrix from its rows' patterns; ML reads it, so
+      /// it is declared before the preconditioner and outlives it.
+      std::unique_ptr<RowPatternMatrix>                   row_patterns;
       std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
       SolverControl                                       direct_control;
       std::unique_ptr<TrilinosWrappers::SolverDirect>     direct;

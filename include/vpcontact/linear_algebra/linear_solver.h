@@ -182,7 +182,10 @@ namespace VPContact
      * factors built for it in initialize(), until the next initialize(); a
      * solve where that does not converge within a few times the iterations
      * of a fresh solve builds them anew for the changed matrix and solves
-     * with those.
+     * with those. The solver's products with the matrix take in the new
+     * values (SpdSolver::values_changed()): every change of the values
+     * that a later solve is to see must be followed by this call or by
+     * initialize().
      */
     void
     matrix_changed();

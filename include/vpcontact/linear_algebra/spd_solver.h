@@ -133,6 +133,15 @@ namespace VPContact
     {
       return false;
     }
+
+    /**
+     * The values of the matrix given to initialize() changed in place and
+     * the preconditioner or factors are kept: what the solver keeps of the
+     * values for its products must follow them.
+     */
+    virtual void
+    values_changed()
+    {}
   };
 
   /// The solver of @p method in @p package. Throws where the package does
