@@ -275,7 +275,10 @@ def goals(best, sizes, algebras, every=None):
         ("CG + AMG at most 0.5 of the peer's CG + GAMG, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["total_s"], g1["total_s"]))),
          "The AMG cycles on the displacement block (ML or GAMG) are the "
-         "step; their count per solve and their cost per unknown are the "
+         "step. With Trilinos, the products with the matrix on the finest "
+         "level and in CG are the program's (RowPatternMatrix, "
+         "[design.md](design.md)); the coarser levels, the transfers "
+         "between them and the number of cycles per solve are the "
          "library's."),
         ("the same on 2 ranks",
          each(lambda a1, a2: fmt(ratio(a2["total_s"], g2["total_s"]))),

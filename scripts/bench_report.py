@@ -483,7 +483,8 @@ def run_options(rows):
     rounds where they are not the default, and for a part of the
     configurations (--configs, --one-thread, --huge-pages) the names of
     those that ran, so that the command on the page runs the same set
-    again. An --against commit runs what it offers of that set."""
+    again. An --against commit runs what it offers of that set, or the
+    part of it that ran."""
     def names(selected):
         return "|".join(sorted({config_name(r) for r in selected}))
 
@@ -504,6 +505,10 @@ def run_options(rows):
             options += f" --one-thread '{which}'"
         elif commit.endswith(" huge pages"):
             options += f" --huge-pages '{which}'"
+        elif {config_name(r) for r in selected} < {
+                config_name(r) for r in head
+                if not config_name(r).startswith("peer")}:
+            options += f" --against '{commit}:{which}'"
         else:
             options += f" --against {commit}"
     return options
@@ -571,8 +576,12 @@ def head_sections(best, sizes, algebras):
         growth if len(sizes) > 1 else []) + [
         "", f"## Where the time goes at {max(sizes)}²", "",
         "Shares of a step. The displacement solve of CG with AMG is a "
-        "number of AMG cycles over the whole displacement block, each "
-        "bound by the memory bandwidth; a factorization's solve is a pair "
+        "number of AMG cycles over the whole displacement block: products "
+        "with the matrix on its finest level and in CG (with Trilinos from "
+        "the patterns of the matrix's repeated rows, RowPatternMatrix in "
+        "[design.md](design.md)), ML's or GAMG's products on the coarser "
+        "levels and between them, bound by the memory bandwidth; a "
+        "factorization's solve is a pair "
         "of triangular substitutions over factors many times the size of "
         "the matrix. The damage solves are several CG solves per step, one "
         "for each active set the bound iteration tries "
