@@ -275,8 +275,8 @@ def goals(best, sizes, algebras, every=None):
         ("CG + AMG at most 0.5 of the peer's CG + GAMG, 1 rank",
          each(lambda a1, a2: fmt(ratio(a1["total_s"], g1["total_s"]))),
          "The AMG cycles on the displacement block (ML or GAMG) are the "
-         "step. With Trilinos, the products with the matrix on the finest "
-         "level and in CG are the program's (RowPatternMatrix, "
+         "step. With either package, the products with the matrix on the "
+         "finest level and in CG are the program's (RowPatternMatrix, "
          "[design.md](design.md)); the coarser levels, the transfers "
          "between them and the number of cycles per solve are the "
          "library's."),

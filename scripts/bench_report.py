@@ -577,8 +577,8 @@ def head_sections(best, sizes, algebras):
         "", f"## Where the time goes at {max(sizes)}²", "",
         "Shares of a step. The displacement solve of CG with AMG is a "
         "number of AMG cycles over the whole displacement block: products "
-        "with the matrix on its finest level and in CG (with Trilinos from "
-        "the patterns of the matrix's repeated rows, RowPatternMatrix in "
+        "with the matrix on its finest level and in CG (from the patterns "
+        "of the matrix's repeated rows, RowPatternMatrix in "
         "[design.md](design.md)), ML's or GAMG's products on the coarser "
         "levels and between them, bound by the memory bandwidth; a "
         "factorization's solve is a pair "

@@ -1,10 +1,12 @@
-// PETSc's errors in the program's words, and the copies between the
-// program's Trilinos objects and PETSc's.
+// PETSc's errors in the program's words, the copies between the program's
+// Trilinos objects and PETSc's, and the PETSc operator of a matrix's row
+// patterns.
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/linear_algebra/petsc_tools.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
+#include <Epetra_Vector.h>
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
@@ -207,5 +209,67 @@ namespace VPContact
     VPContactPetsc(VecGetArrayRead(from, &entries));
     std::copy(entries, entries + to.locally_owned_size(), to.begin());
     VPContactPetsc(VecRestoreArrayRead(from, &entries));
+  }
+  namespace
+  {
+    /// MATOP_MULT of create_pattern_product(): y = K x, the PETSc arrays
+    /// viewed as Epetra vectors of the matrix's own layout.
+    PetscErrorCode
+    pattern_product(Mat product, Vec x, Vec y)
+    {
+      void *context = nullptr;
+      PetscCall(MatShellGetContext(product, &context));
+      const auto &patterns = *static_cast<const RowPatternMatrix *>(context);
+      const PetscScalar *x_entries;
+      PetscScalar       *y_entries;
+      PetscCall(VecGetArrayRead(x, &x_entries));
+      PetscCall(VecGetArray(y, &y_entries));
+      int error = 0;
+      try
+        {
+          // Epetra's views take non-const pointers; x is only read.
+          const Epetra_Vector X(View,
+                                patterns.OperatorDomainMap(),
+                                const_cast<double *>(x_entries));
+          Epetra_Vector       Y(View, patterns.OperatorRangeMap(), y_entries);
+          error = patterns.Multiply(false, X, Y);
+        }
+      catch (...)
+        {
+          error = -1;
+        }
+      PetscCall(VecRestoreArray(y, &y_entries));
+      PetscCall(VecRestoreArrayRead(x, &x_entries));
+      PetscCheck(error == 0,
+                 PETSC_COMM_SELF,
+                 PETSC_ERR_LIB,
+                 "the product from the matrix's row patterns failed "
+                 "(Epetra error %d)",
+                 error);
+      return 0;
+    }
+  } // namespace
+
+
+
+  Mat
+  create_pattern_product(const RowPatternMatrix &patterns, MPI_Comm comm)
+  {
+    const PetscInt n_local  = patterns.OperatorRangeMap().NumMyElements();
+    const PetscInt n_global = patterns.OperatorRangeMap().NumGlobalElements64();
+    Mat            product;
+    VPContactPetsc(MatCreateShell(comm,
+                                  n_local,
+                                  n_local,
+                                  n_global,
+                                  n_global,
+                                  const_cast<RowPatternMatrix *>(&patterns),
+                                  &product));
+    VPContactPetsc(
+      MatShellSetOperation(product,
+                           MATOP_MULT,
+                           reinterpret_cast<void (*)(void)>(&pattern_product)));
+    VPContactPetsc(MatSetOption(product, MAT_SYMMETRIC, PETSC_TRUE));
+    return product;
   }
 } // namespace VPContact

@@ -57,6 +57,20 @@ namespace VPContact
   void
   RowPatternMatrix::update()
   {
+    find_patterns();
+    // Each rank decides from its own rows (on a mesh of unequal cells in
+    // one part, a rank's rows may repeat too little while another's
+    // repeat); the callers need one answer.
+    const auto *mpi  = dynamic_cast<const Epetra_MpiComm *>(&matrix.Comm());
+    const int   mine = use_patterns ? 1 : 0;
+    used_somewhere   = (mpi ? Utilities::MPI::max(mine, mpi->Comm()) : mine);
+  }
+
+
+
+  void
+  RowPatternMatrix::find_patterns()
+  {
     clear_patterns();
     use_patterns = false;
     x_columns.reset();
@@ -160,7 +174,7 @@ namespace VPContact
   bool
   RowPatternMatrix::compressed() const
   {
-    return use_patterns;
+    return used_somewhere;
   }
 
 

@@ -5,8 +5,13 @@
 // and through deal.II's vectors, also after the values change in place; a
 // matrix whose rows all differ keeps Epetra's product; and CG with ML built
 // on the patterns takes the iterations it takes with ML built on the
-// matrix. The grid has more rows than one task of the product takes, so
-// that several threads share it.
+// matrix; the ranks agree on whether the patterns are used where only one
+// rank's rows repeat. The PETSc operator of the patterns
+// (create_pattern_product()) gives the products of the matrix's PETSc copy to
+// round-off, and PETSc's CG with GAMG taking its products from it the
+// iterations it takes with the copy. The grid has more rows than one task of
+// the product takes, so that several threads share it.
+#include <vpcontact/linear_algebra/petsc_tools.h>
 #include <vpcontact/linear_algebra/row_pattern_matrix.h>
 
 #include <deal.II/base/index_set.h>
@@ -20,6 +25,7 @@
 #include <Epetra_Vector.h>
 #include <array>
 #include <iostream>
+#include <petscksp.h>
 
 using namespace dealii;
 using namespace VPContact;
@@ -128,6 +134,86 @@ namespace
     cg.solve(matrix, x, b, amg);
     return control.last_step();
   }
+
+  /// PETSc's CG with GAMG on the PETSc copy @p A, its products from
+  /// @p product (A itself or the patterns' operator): the iterations.
+  PetscInt
+  petsc_cg_iterations(Mat product, Mat A, Vec b)
+  {
+    KSP solver;
+    PC  pc;
+    Vec x;
+    VPContactPetsc(VecDuplicate(b, &x));
+    VPContactPetsc(VecSet(x, 0.));
+    VPContactPetsc(KSPCreate(MPI_COMM_WORLD, &solver));
+    VPContactPetsc(KSPSetOperators(solver, product, A));
+    VPContactPetsc(KSPSetType(solver, KSPCG));
+    VPContactPetsc(KSPGetPC(solver, &pc));
+    VPContactPetsc(PCSetType(pc, PCGAMG));
+    VPContactPetsc(PCSetUseAmat(pc, PETSC_TRUE));
+    VPContactPetsc(KSPSetTolerances(solver, 1e-10, 0., 1e300, 1000));
+    VPContactPetsc(KSPSolve(solver, b, x));
+    PetscInt           iterations;
+    KSPConvergedReason reason;
+    VPContactPetsc(KSPGetIterationNumber(solver, &iterations));
+    VPContactPetsc(KSPGetConvergedReason(solver, &reason));
+    KSPDestroy(&solver);
+    VecDestroy(&x);
+    return reason > 0 ? iterations : -1;
+  }
+
+
+
+  /// The patterns' PETSc operator against the matrix's PETSc copy: the
+  /// largest difference of the products relative to the largest entry,
+  /// and, for a symmetric matrix (@p with_cg), the CG iterations with each.
+  void
+  check_petsc_product(const RowPatternMatrix               &patterns,
+                      const TrilinosWrappers::SparseMatrix &matrix,
+                      const unsigned int                    rank,
+                      const bool                            with_cg)
+  {
+    Mat A       = copy_to_petsc(matrix, 2);
+    Mat product = create_pattern_product(patterns, MPI_COMM_WORLD);
+    Vec x, y, z;
+    VPContactPetsc(MatCreateVecs(A, &x, &y));
+    VPContactPetsc(VecDuplicate(y, &z));
+    PetscInt first, last;
+    VPContactPetsc(VecGetOwnershipRange(x, &first, &last));
+    for (PetscInt i = first; i < last; ++i)
+      VPContactPetsc(
+        VecSetValue(x, i, std::sin(0.37 * i) + 1e-3 * i, INSERT_VALUES));
+    VPContactPetsc(VecAssemblyBegin(x));
+    VPContactPetsc(VecAssemblyEnd(x));
+    VPContactPetsc(MatMult(A, x, y));
+    VPContactPetsc(MatMult(product, x, z));
+    PetscReal largest, difference;
+    VPContactPetsc(VecNorm(y, NORM_INFINITY, &largest));
+    VPContactPetsc(VecAXPY(z, -1., y));
+    VPContactPetsc(VecNorm(z, NORM_INFINITY, &difference));
+    if (rank == 0)
+      std::cout << "PETSc operator of the patterns: products as the PETSc "
+                << "copy's to 1e-14: "
+                << (difference <= 1e-14 * largest ? "yes" : "NO");
+    if (with_cg)
+      {
+        const PetscInt with_matrix   = petsc_cg_iterations(A, A, y);
+        const PetscInt with_patterns = petsc_cg_iterations(product, A, y);
+        if (rank == 0)
+          std::cout << "; CG with GAMG converges: "
+                    << (with_patterns > 0 ? "yes" : "NO")
+                    << ", within one iteration of the copy's: "
+                    << (std::abs(with_patterns - with_matrix) <= 1 ? "yes" :
+                                                                     "NO");
+      }
+    if (rank == 0)
+      std::cout << std::endl;
+    VecDestroy(&x);
+    VecDestroy(&y);
+    VecDestroy(&z);
+    MatDestroy(&product);
+    MatDestroy(&A);
+  }
 } // namespace
 
 int
@@ -172,6 +258,8 @@ main(int argc, char **argv)
   if (rank == 0)
     std::cout << "products identical: " << (same ? "yes" : "NO") << std::endl;
 
+  check_petsc_product(patterns, matrix, rank, true);
+
   // The values change in place (the pattern stays): update() takes them.
   matrix *= 1.5;
   patterns.update();
@@ -197,4 +285,23 @@ main(int argc, char **argv)
               << (patterns.compressed() ? "YES" : "no")
               << ", products identical: " << (same_unique ? "yes" : "NO")
               << std::endl;
+
+  // Only the last rank's rows all differ (on one rank: all rows). The
+  // ranks agree on compressed() all the same, and the last rank's products
+  // are the matrix's: with 2 ranks the solvers take the patterns (and
+  // the PETSc operator is created on every rank), with 1 they do not.
+  matrix = 0;
+  assemble(matrix, owned, rank + 1 == n_ranks);
+  patterns.update();
+  const int  compressed = patterns.compressed() ? 1 : 0;
+  const bool agree      = Utilities::MPI::min(compressed, MPI_COMM_WORLD)
+                     == Utilities::MPI::max(compressed, MPI_COMM_WORLD);
+  const bool same_mixed = same_products(patterns, matrix, owned);
+  if (rank == 0)
+    std::cout << "the last rank's rows all differ: compressed "
+              << (compressed ? "yes" : "no")
+              << ", the same on every rank: " << (agree ? "yes" : "NO")
+              << ", products identical: " << (same_mixed ? "yes" : "NO")
+              << std::endl;
+  check_petsc_product(patterns, matrix, rank, false);
 }

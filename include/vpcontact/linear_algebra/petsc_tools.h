@@ -2,11 +2,13 @@
 // checked call macro whose message says what PETSc said (and where
 // PETSC_OPTIONS is set, that it may be the cause), the check of
 // PETSC_OPTIONS before PETSc starts, and the copies of a matrix and of
-// vector entries.
+// vector entries, and a PETSc operator whose products read the patterns of
+// a matrix's rows.
 #ifndef vpcontact_petsc_tools_h
 #define vpcontact_petsc_tools_h
 
 #include <vpcontact/linear_algebra/linear_algebra.h>
+#include <vpcontact/linear_algebra/row_pattern_matrix.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -82,6 +84,18 @@ namespace VPContact
   /// The owned entries of the PETSc vector @p from into @p to.
   void
   copy_from_petsc(Vec from, LA::MPI::Vector &to);
+
+  /**
+   * A PETSc operator (a shell matrix) with the products of @p patterns,
+   * for the PETSc vectors of the layout copy_to_petsc() gives the matrix
+   * the patterns were taken from: each rank's entries in the same order.
+   * CG and the finest level of GAMG take their products from it, the same
+   * as the matrix's to round-off, for a fraction of the memory traffic of
+   * PETSc's AIJ product (see RowPatternMatrix). @p patterns must outlive
+   * it; the caller destroys it.
+   */
+  Mat
+  create_pattern_product(const RowPatternMatrix &patterns, MPI_Comm comm);
 } // namespace VPContact
 
 #endif

@@ -50,10 +50,17 @@ namespace VPContact
     explicit RowPatternMatrix(const Epetra_CrsMatrix &matrix);
 
     /// Take in the values of the matrix again (its pattern is unchanged).
+    /// Collective, as the constructor.
     void
     update();
 
-    /// Whether the products read the patterns (false: the matrix's own).
+    /**
+     * Whether the products read the patterns on some rank; false: they are
+     * the matrix's own on every rank. The same on every rank, so that the
+     * callers that choose between this object and the matrix by it call
+     * the same collective operations everywhere; a rank whose own rows
+     * repeat too little takes the matrix's product for them.
+     */
     bool
     compressed() const;
 
@@ -173,6 +180,11 @@ namespace VPContact
       const double *values;
     };
 
+    /// The patterns of the owned rows, or none where they would hold
+    /// too much (use_patterns false).
+    void
+    find_patterns();
+
     void
     clear_patterns();
 
@@ -208,7 +220,10 @@ namespace VPContact
     std::vector<int>    offsets;
     std::vector<double> values;
 
-    bool use_patterns = false;
+    /// Whether this rank's products read its patterns, and whether some
+    /// rank's do.
+    bool use_patterns   = false;
+    bool used_somewhere = false;
 
     /// x with the other ranks' entries that the rows read (the matrix's
     /// column layout), where there are such columns.
