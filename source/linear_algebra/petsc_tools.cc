@@ -210,6 +210,9 @@ namespace VPContact
     std::copy(entries, entries + to.locally_owned_size(), to.begin());
     VPContactPetsc(VecRestoreArrayRead(from, &entries));
   }
+
+
+
   namespace
   {
     /// MATOP_MULT of create_pattern_product(): y = K x, the PETSc arrays
