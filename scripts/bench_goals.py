@@ -362,8 +362,9 @@ def goals(best, sizes, algebras, every=None):
          "On 1 rank the estimate already runs in deal.II's threads on "
          "both cores; 2 ranks split the cells but not the cores. From 1 "
          "rank of one thread, the ranks split both."),
-        (f"time per step grows at most 4.4 times per 4 times the unknowns, "
-         f"{min(sizes)}² to {size}²",
+        ("time per step grows at most 4.4 times per 4 times the unknowns, "
+         + (f"{min(sizes)}² to {size}²" if len(sizes) > 1
+            else "from the smallest mesh to the largest"),
          "largest over the runs: " + "; ".join(
              f"{a} {largest_growth(a)}" for a in algebras),
          "The factors' fill and the damage solves' iterations grow faster "
