@@ -21,9 +21,8 @@ main(int argc, char **argv)
   // RTLD_LAZY: as in a linked program, a function of the libraries is bound
   // when it is first called. deal.II's library alone has about 100,000 such
   // functions, most of which a run never calls; binding all of them at load
-  // (RTLD_NOW) took about 60 ms more per process (a run of 4 x 4 cells,
-  // median of 8: 0.886 s against 0.829 s; on 2 ranks 0.959 s against
-  // 0.864 s; AMD EPYC).
+  // (RTLD_NOW) made every process start later (the figures are in the
+  // message of the commit that chose RTLD_LAZY).
   void *const library = dlopen(VPCONTACT_LIBRARY, RTLD_LAZY | RTLD_GLOBAL);
   if (library == nullptr)
     {
