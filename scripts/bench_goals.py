@@ -302,8 +302,9 @@ def goals(best, sizes, algebras, every=None):
          "DoFHandler's indices), the matrix and its sparsity graph, the "
          "fields at the quadrature points, the points and entry positions "
          "kept per cell, and the damage matrix once (the rows that its "
-         "solver and its products read); with PETSc a copy of the "
-         "matrix in PETSc's format comes on top. The peer holds one PETSc "
+         "solver and its products read); with PETSc on one rank, PETSc "
+         "reads that matrix where it is, without a copy (on several ranks "
+         "a copy in PETSc's layout comes on top, see the row below). The peer holds one PETSc "
          "matrix and GAMG's hierarchy."),
         ("the same per rank on 2 ranks",
          each(lambda a1, a2: memory_ratio(a2, g2)),
@@ -312,7 +313,10 @@ def goals(best, sizes, algebras, every=None):
          "out the pages mapped from the libraries' files that every "
          "rank's resident set counts again. Each rank holds its own cells with a layer of "
          "ghost cells, its rows of the matrices and its part of ML's "
-         "hierarchy; the coarse mesh, which every rank holds whole, is one "
+         "or GAMG's hierarchy; with PETSc also a copy of its rows of the "
+         "matrix, since PETSc splits a rank's rows into the columns it "
+         "owns and the others where Epetra keeps each row in one piece "
+         "([design.md](design.md)); the coarse mesh, which every rank holds whole, is one "
          "p4est tree for the box of the paper scene."),
         ("CG + AMG speed-up from 1 to 2 ranks at least 1.7",
          each(lambda a1, a2: fmt(ratio(a1["total_s"], a2["total_s"])))

@@ -158,6 +158,46 @@ namespace VPContact
 
 
 
+  Mat
+  view_in_petsc(const LA::SparseMatrix &matrix,
+                const unsigned int      dofs_per_node)
+  {
+    // On one process Epetra stores its rows as PETSc's SeqAIJ does: row
+    // offsets, column indices sorted within each row, values, in three
+    // arrays once its storage is optimized. The local column indices are
+    // the global ones where the column map is the row map, a contiguous
+    // range from 0.
+    const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+    int                    *row_start, *columns;
+    double                 *entries;
+    if (epetra.Comm().NumProc() != 1 || !epetra.Filled()
+        || !epetra.StorageOptimized() || !epetra.RowMap().LinearMap()
+        || epetra.RowMap().MinMyGID64() != 0
+        || !epetra.ColMap().SameAs(epetra.RowMap())
+        || epetra.ExtractCrsDataPointers(row_start, columns, entries) != 0)
+      return nullptr;
+    for (int r = 0; r < epetra.NumMyRows(); ++r)
+      if (!std::is_sorted(columns + row_start[r], columns + row_start[r + 1]))
+        return nullptr;
+    static_assert(sizeof(PetscInt) == sizeof(int),
+                  "a view needs PETSc's indices to be Epetra's ints");
+    const PetscInt n = epetra.NumMyRows();
+    Mat            A;
+    VPContactPetsc(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF,
+                                             n,
+                                             n,
+                                             row_start,
+                                             columns,
+                                             entries,
+                                             &A));
+    VPContactPetsc(MatSetBlockSize(A, dofs_per_node));
+    VPContactPetsc(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    VPContactPetsc(MatSetOption(A, MAT_SPD, PETSC_TRUE));
+    return A;
+  }
+
+
+
   void
   copy_values_to_petsc(const LA::SparseMatrix &matrix, Mat A)
   {

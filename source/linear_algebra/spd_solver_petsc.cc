@@ -1,6 +1,6 @@
-// The PETSc implementation of SpdSolver: the matrix copied once into a PETSc
-// AIJ matrix, PETSc's CG with GAMG or block Jacobi / ICC, or the Cholesky
-// factorization of MUMPS through PETSc.
+// The PETSc implementation of SpdSolver: the matrix viewed (one process) or
+// copied once into a PETSc AIJ matrix, PETSc's CG with GAMG or block Jacobi /
+// ICC, or the Cholesky factorization of MUMPS through PETSc.
 #include <vpcontact/linear_algebra/blas_threads.h>
 #include <vpcontact/linear_algebra/linear_algebra.h>
 #include <vpcontact/linear_algebra/petsc_tools.h>
@@ -44,7 +44,12 @@ namespace VPContact
         release();
         this->matrix = &matrix;
         communicator = matrix.get_mpi_communicator();
-        A            = copy_to_petsc(matrix, near_null_space.dofs_per_node);
+        // One process reads the entries where the program assembled them;
+        // several take a copy in PETSc's layout.
+        A             = view_in_petsc(matrix, near_null_space.dofs_per_node);
+        values_shared = A != nullptr;
+        if (!values_shared)
+          A = copy_to_petsc(matrix, near_null_space.dofs_per_node);
         VPContactPetsc(MatCreateVecs(A, &x, &b));
         VPContactPetsc(KSPCreate(communicator, &ksp));
         PC pc;
@@ -123,7 +128,14 @@ namespace VPContact
         if (!is_direct() || A == nullptr)
           return false;
         release_free_rows();
-        copy_values_to_petsc(*matrix, A);
+        if (values_shared)
+          {
+            // The values are already there; an assembly marks them new.
+            VPContactPetsc(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+            VPContactPetsc(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+          }
+        else
+          copy_values_to_petsc(*matrix, A);
         VPContactPetsc(KSPSetOperators(ksp, A, A));
         set_up();
         return true;
@@ -357,7 +369,10 @@ namespace VPContact
       const SpdMethod         method;
       const LA::SparseMatrix *matrix       = nullptr;
       MPI_Comm                communicator = MPI_COMM_WORLD;
-      Mat                     A            = nullptr;
+      /// The matrix in PETSc: a view of the program's (view_in_petsc())
+      /// where values_shared, else a copy.
+      Mat  A             = nullptr;
+      bool values_shared = false;
       /// CG's operator where the rows repeat: the products of row_patterns.
       std::unique_ptr<RowPatternMatrix> row_patterns;
       Mat                               product = nullptr;

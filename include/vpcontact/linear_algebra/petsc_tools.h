@@ -70,6 +70,21 @@ namespace VPContact
   copy_to_petsc(const LA::SparseMatrix &matrix,
                 const unsigned int      dofs_per_node);
 
+  /**
+   * A sequential PETSc AIJ matrix that reads the entries of @p matrix where
+   * they are stored, without a copy, or nullptr where it cannot: on
+   * several processes (PETSc splits each rank's rows into the columns it
+   * owns and the others, Epetra keeps a row in one piece), or where
+   * Epetra's local column indices are not the global ones in ascending
+   * order within each row. A change of the matrix's values is then seen by
+   * PETSc at once; MatAssemblyBegin/End() of the view tell its
+   * solvers. @p matrix
+   * must keep its pattern and outlive the view; the caller destroys it.
+   */
+  Mat
+  view_in_petsc(const LA::SparseMatrix &matrix,
+                const unsigned int      dofs_per_node);
+
   /// The owned entries of @p from into the PETSc vector @p to of the same
   /// layout.
   void

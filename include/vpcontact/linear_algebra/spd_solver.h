@@ -62,9 +62,9 @@ namespace VPContact
    * mesh, the time step or the stick set.
    *
    * The program keeps its fields in Trilinos vectors and assembles into a
-   * Trilinos matrix; the PETSc implementation copies the matrix into a PETSc
-   * matrix in initialize() and the vectors in each solve(), which costs a
-   * pass over their entries.
+   * Trilinos matrix; the PETSc implementation views the matrix as a PETSc
+   * matrix in initialize() on one process and copies it on several, and
+   * copies the vectors in each solve(), a pass over their entries.
    *
    * A solve may hold some rows: K x = b is then solved on the other rows
    * (the free ones) with x = 0 on the held ones. With incomplete Cholesky,
