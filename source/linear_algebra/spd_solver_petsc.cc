@@ -163,6 +163,43 @@ namespace VPContact
               "memory ran out. Check that the boundary conditions "
               "hold the body, or choose Solver/Linear solver = CG "
               "with AMG, which needs far less memory."));
+        if (method == SpdMethod::cg_amg)
+          release_product_data(ksp);
+      }
+
+      /**
+       * GAMG forms each coarse level's operator as a Galerkin product
+       * P^T A P and keeps in it what PETSc needs to form it again from new
+       * values of A (MatPtAP with MAT_REUSE_MATRIX): the local and the
+       * other ranks' rows of P, its transpose, the product's work arrays;
+       * likewise the smoothed prolongators, products A P_0.
+       * This program builds a new GAMG for new values (update_values()), so
+       * that data only holds memory for the rest of the run;
+       * MatProductClear() frees it.
+       */
+      static void
+      release_product_data(KSP solver)
+      {
+        PC       pc;
+        PetscInt n_levels;
+        VPContactPetsc(KSPGetPC(solver, &pc));
+        VPContactPetsc(PCMGGetLevels(pc, &n_levels));
+        for (PetscInt level = 0; level + 1 < n_levels; ++level)
+          {
+            KSP smoother;
+            Mat operator_matrix, preconditioning_matrix;
+            VPContactPetsc(PCMGGetSmoother(pc, level, &smoother));
+            VPContactPetsc(KSPGetOperators(smoother,
+                                           &operator_matrix,
+                                           &preconditioning_matrix));
+            VPContactPetsc(MatProductClear(operator_matrix));
+            if (preconditioning_matrix != operator_matrix)
+              VPContactPetsc(MatProductClear(preconditioning_matrix));
+            // The smoothed prolongator of the level above: a product A P_0.
+            Mat interpolation;
+            VPContactPetsc(PCMGGetInterpolation(pc, level + 1, &interpolation));
+            VPContactPetsc(MatProductClear(interpolation));
+          }
       }
 
       /**
@@ -190,6 +227,9 @@ namespace VPContact
         VPContactPetsc(VecGetSubVector(b, free_set, &b_free));
         VPContactPetsc(VecGetSubVector(x, free_set, &x_free));
         VPContactPetsc(KSPSolve(free_ksp, b_free, x_free));
+        // Its GAMG is built by the first solve with a new free set.
+        if (method == SpdMethod::cg_amg)
+          release_product_data(free_ksp);
         VPContactPetsc(VecRestoreSubVector(b, free_set, &b_free));
         VPContactPetsc(VecRestoreSubVector(x, free_set, &x_free));
         const unsigned int iterations = finished(free_ksp);
