@@ -27,6 +27,8 @@
 #include <iostream>
 #include <petscksp.h>
 
+#include "petsc_cg_iterations.h"
+
 using namespace dealii;
 using namespace VPContact;
 
@@ -133,33 +135,6 @@ namespace
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
     cg.solve(matrix, x, b, amg);
     return control.last_step();
-  }
-
-  /// PETSc's CG with GAMG on the PETSc copy @p A, its products from
-  /// @p product (A itself or the patterns' operator): the iterations.
-  PetscInt
-  petsc_cg_iterations(Mat product, Mat A, Vec b)
-  {
-    KSP solver;
-    PC  pc;
-    Vec x;
-    VPContactPetsc(VecDuplicate(b, &x));
-    VPContactPetsc(VecSet(x, 0.));
-    VPContactPetsc(KSPCreate(MPI_COMM_WORLD, &solver));
-    VPContactPetsc(KSPSetOperators(solver, product, A));
-    VPContactPetsc(KSPSetType(solver, KSPCG));
-    VPContactPetsc(KSPGetPC(solver, &pc));
-    VPContactPetsc(PCSetType(pc, PCGAMG));
-    VPContactPetsc(PCSetUseAmat(pc, PETSC_TRUE));
-    VPContactPetsc(KSPSetTolerances(solver, 1e-10, 0., 1e300, 1000));
-    VPContactPetsc(KSPSolve(solver, b, x));
-    PetscInt           iterations;
-    KSPConvergedReason reason;
-    VPContactPetsc(KSPGetIterationNumber(solver, &iterations));
-    VPContactPetsc(KSPGetConvergedReason(solver, &reason));
-    KSPDestroy(&solver);
-    VecDestroy(&x);
-    return reason > 0 ? iterations : -1;
   }
 
 
