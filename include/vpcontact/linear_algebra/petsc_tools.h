@@ -77,9 +77,9 @@ namespace VPContact
    * owns and the others, Epetra keeps a row in one piece), or where
    * Epetra's local column indices are not the global ones in ascending
    * order within each row. A change of the matrix's values is then seen by
-   * PETSc at once; MatAssemblyBegin/End() of the view tell its
-   * solvers. @p matrix
-   * must keep its pattern and outlive the view; the caller destroys it.
+   * PETSc at once; MatAssemblyBegin/End() of the view tell its solvers.
+   * @p matrix must keep its pattern and outlive the view; the caller
+   * destroys it.
    */
   Mat
   view_in_petsc(const LA::SparseMatrix &matrix,
