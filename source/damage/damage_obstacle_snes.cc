@@ -32,7 +32,10 @@ namespace VPContact
   DamageObstacleSnes::initialize(const LA::SparseMatrix &matrix)
   {
     release();
-    K = copy_to_petsc(matrix, 1);
+    // One process reads the matrix where the program assembled it.
+    K = view_in_petsc(matrix, 1);
+    if (K == nullptr)
+      K = copy_to_petsc(matrix, 1);
     VPContactPetsc(MatCreateVecs(K, &z, &f));
     for (Vec *v : {&load, &lower, &upper})
       VPContactPetsc(VecDuplicate(z, v));

@@ -32,8 +32,9 @@ namespace VPContact
   public:
     ~DamageObstacleSnes();
 
-    /// Copy K (which changes with the mesh and the time step only) and set
-    /// up the Newton method around it.
+    /// Take K (which changes with the mesh and the time step only) into
+    /// PETSc, a view of @p matrix on one process (which must then outlive
+    /// it) and a copy on several, and set up the Newton method around it.
     void
     initialize(const LA::SparseMatrix &matrix);
 
